@@ -1,0 +1,137 @@
+//============================================================================
+// vtkPhong fragment shader pieces, injected at VTK's polydata fragment shader
+// tags by vtkPhongShaderBuilder (same //PHONG_IF template rules as
+// vtkPhongLightingLib.glsl). VTK's Color::Impl has already defined
+// ambientColor (ka*Ca), diffuseColor (kd*Cd), specularColor (ks*Cs),
+// specularPower (n) and opacity, with the back material on back faces, and
+// Normal::Impl has defined normalVCVSOutput (unit, facing the viewer on back
+// faces).
+//============================================================================
+
+//PHONG_SECTION Dec
+//PHONG_IF AMBIENT
+uniform vec3 phongAmbientLight; // Ia plus the ambient light of directional lights
+//PHONG_ENDIF
+//PHONG_IF EMISSION
+uniform vec3 phongEmission;
+//PHONG_IF BACK_MATERIAL
+uniform vec3 phongEmissionBF;
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF SUMS_PER_VERTEX
+//PHONG_IF POSITIONAL_AMBIENT
+in vec3 phongAmbientLightVSOutput;
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+in vec3 phongDiffuseLightVSOutput;
+//PHONG_IF TWO_SIDED
+in vec3 phongDiffuseLightBFVSOutput;
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+in vec3 phongSpecularLightVSOutput;
+//PHONG_IF TWO_SIDED
+in vec3 phongSpecularLightBFVSOutput;
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_ENDIF
+
+//PHONG_SECTION UniformFlow
+//PHONG_IF NORMAL_FALLBACK
+  // The face's geometric normal, for fragments whose normal is zero or NaN.
+  // Derivatives need uniform control flow, so it is computed for every fragment.
+  vec3 phongGeometricNormalVC = cross(dFdx(vertexVC.xyz), dFdy(vertexVC.xyz));
+//PHONG_ENDIF
+
+//PHONG_SECTION Impl
+  // vtkPhong lighting. Textures (applied by VTK right after this block)
+  // multiply the ambient and diffuse light written here; emission and
+  // specular are added after them.
+//PHONG_IF VIEW_VECTOR
+//PHONG_IF PARALLEL
+  vec3 phongViewVC = vec3(0.0, 0.0, 1.0);
+//PHONG_ENDIF
+//PHONG_IF !PARALLEL
+  vec3 phongViewVC = normalize(-vertexVC.xyz);
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF SHADING_NORMAL
+  vec3 phongNormalVC = normalVCVSOutput;
+//PHONG_IF NORMAL_FALLBACK
+  if (!(dot(phongNormalVC, phongNormalVC) > 0.5)) // zero-length or NaN normal
+  {
+    float geometricLength = length(phongGeometricNormalVC);
+    phongNormalVC = geometricLength > 0.0 ? phongGeometricNormalVC / geometricLength : phongViewVC;
+    if (!(dot(phongNormalVC, phongViewVC) >= 0.0))
+    {
+      phongNormalVC = -phongNormalVC; // face the viewer, as VTK's normals do on back faces
+    }
+    if (!(dot(phongNormalVC, phongNormalVC) > 0.5))
+    {
+      phongNormalVC = phongViewVC;
+    }
+  }
+//PHONG_ENDIF
+//PHONG_IF ONE_SIDED
+  // Without two-sided lighting a back face keeps its own, averted, normal.
+  if (gl_FrontFacing == false)
+  {
+    phongNormalVC = -phongNormalVC;
+  }
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF SUMS_PER_FRAGMENT
+  phongLightSums phongSums = phongSumLights(vertexVC.xyz, phongNormalVC, phongViewVC, specularPower);
+//PHONG_ENDIF
+//PHONG_IF SUMS_PER_VERTEX
+  phongLightSums phongSums;
+//PHONG_IF POSITIONAL_AMBIENT
+  phongSums.ambient = phongAmbientLightVSOutput;
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+  phongSums.diffuse = phongDiffuseLightVSOutput;
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+  phongSums.specular = phongSpecularLightVSOutput;
+//PHONG_ENDIF
+//PHONG_IF TWO_SIDED
+  if (gl_FrontFacing == false)
+  {
+//PHONG_IF DIFFUSE
+    phongSums.diffuse = phongDiffuseLightBFVSOutput;
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+    phongSums.specular = phongSpecularLightBFVSOutput;
+//PHONG_ENDIF
+  }
+//PHONG_ENDIF
+//PHONG_ENDIF
+  vec3 phongTexturedLight = vec3(0.0);
+//PHONG_IF AMBIENT
+//PHONG_IF POSITIONAL_AMBIENT
+  phongTexturedLight += ambientColor * (phongAmbientLight + phongSums.ambient);
+//PHONG_ENDIF
+//PHONG_IF !POSITIONAL_AMBIENT
+  phongTexturedLight += ambientColor * phongAmbientLight;
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+  phongTexturedLight += diffuseColor * phongSums.diffuse;
+//PHONG_ENDIF
+  gl_FragData[0] = vec4(phongTexturedLight, opacity);
+
+//PHONG_SECTION PostTexture
+//PHONG_IF EMISSION
+//PHONG_IF BACK_MATERIAL
+  gl_FragData[0].rgb += gl_FrontFacing ? phongEmission : phongEmissionBF;
+//PHONG_ENDIF
+//PHONG_IF !BACK_MATERIAL
+  gl_FragData[0].rgb += phongEmission;
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+  gl_FragData[0].rgb += specularColor * phongSums.specular;
+//PHONG_ENDIF
+//PHONG_IF DEBUG_NORMAL
+  gl_FragData[0] = vec4(0.5 * phongNormalVC + 0.5, 1.0);
+//PHONG_ENDIF

@@ -1,0 +1,76 @@
+//============================================================================
+// vtkPhong vertex shader pieces for per-vertex Gouraud: the lighting equation
+// is evaluated at each vertex and the light sums are interpolated. Injected
+// at VTK's polydata vertex shader tags by vtkPhongShaderBuilder (same
+// //PHONG_IF template rules as vtkPhongLightingLib.glsl). VTK's Normal::Impl
+// and PositionVC::Impl have set normalVCVSOutput and vertexVCVSOutput.
+//============================================================================
+
+//PHONG_SECTION Dec
+//PHONG_IF SPECULAR
+uniform float specularPowerUniform;
+//PHONG_IF TWO_SIDED
+uniform float phongShininessBF; // the back material's n
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF POSITIONAL_AMBIENT
+out vec3 phongAmbientLightVSOutput;
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+out vec3 phongDiffuseLightVSOutput;
+//PHONG_IF TWO_SIDED
+out vec3 phongDiffuseLightBFVSOutput;
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+out vec3 phongSpecularLightVSOutput;
+//PHONG_IF TWO_SIDED
+out vec3 phongSpecularLightBFVSOutput;
+//PHONG_ENDIF
+//PHONG_ENDIF
+
+//PHONG_SECTION Impl
+//PHONG_IF PARALLEL
+  vec3 phongViewVC = vec3(0.0, 0.0, 1.0);
+//PHONG_ENDIF
+//PHONG_IF !PARALLEL
+  vec3 phongViewVC = normalize(-vertexVCVSOutput.xyz);
+//PHONG_ENDIF
+  // A zero-length, infinite or NaN vertex normal has no direction: such a
+  // vertex is lit as if it faced the eye.
+  float phongNormalLength2 = dot(normalVCVSOutput, normalVCVSOutput);
+  vec3 phongNormalVC = (phongNormalLength2 > 0.0 && phongNormalLength2 < 1.0e30)
+    ? normalVCVSOutput * inversesqrt(phongNormalLength2) : phongViewVC;
+//PHONG_IF SPECULAR
+  float phongShininess = specularPowerUniform;
+//PHONG_ENDIF
+//PHONG_IF !SPECULAR
+  float phongShininess = 0.0;
+//PHONG_ENDIF
+  phongLightSums phongFront = phongSumLights(vertexVCVSOutput.xyz, phongNormalVC, phongViewVC, phongShininess);
+//PHONG_IF POSITIONAL_AMBIENT
+  phongAmbientLightVSOutput = phongFront.ambient;
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+  phongDiffuseLightVSOutput = phongFront.diffuse;
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+  phongSpecularLightVSOutput = phongFront.specular;
+//PHONG_ENDIF
+//PHONG_IF TWO_SIDED
+//PHONG_IF DIFFUSE_OR_SPECULAR
+  // Back faces are lit with the reversed normal and the back material.
+//PHONG_IF SPECULAR
+  phongLightSums phongBack = phongSumLights(vertexVCVSOutput.xyz, -phongNormalVC, phongViewVC, phongShininessBF);
+//PHONG_ENDIF
+//PHONG_IF !SPECULAR
+  phongLightSums phongBack = phongSumLights(vertexVCVSOutput.xyz, -phongNormalVC, phongViewVC, 0.0);
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+  phongDiffuseLightBFVSOutput = phongBack.diffuse;
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+  phongSpecularLightBFVSOutput = phongBack.specular;
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_ENDIF

@@ -1,0 +1,234 @@
+#include "vtkPhongPolyDataMapper.h"
+
+#include "vtkActor.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPhongShaderBuilder.h"
+#include "vtkShaderProgram.h"
+#include "vtkShaderProperty.h"
+
+#include <chrono>
+#include <functional>
+#include <set>
+
+vtkStandardNewMacro(vtkPhongPolyDataMapper);
+
+struct vtkPhongPolyDataMapper::Internals
+{
+  vtkNew<vtkPhongShaderBuilder> Builder;
+  // The plan of each primitive (points, lines, polygons, strips), made afresh
+  // every frame by GetNeedToRebuildShaders and used until the next one.
+  std::map<const vtkOpenGLHelper*, vtkPhongShaderBuilder::Plan> Plans;
+  std::set<std::string> Signatures;
+  // Variants whose shader failed to compile: drawn with VTK's lighting instead.
+  std::set<std::string> FailedSignatures;
+  // Hashes of the shader sources handed to the render window's shader cache.
+  std::set<std::size_t> KnownSources;
+  bool BuiltShaders = false;
+  std::string ReportedProblems;
+};
+
+//------------------------------------------------------------------------------
+vtkPhongPolyDataMapper::vtkPhongPolyDataMapper()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkPhongPolyDataMapper::~vtkPhongPolyDataMapper() = default;
+
+//------------------------------------------------------------------------------
+const char* vtkPhongPolyDataMapper::GetDebugViewAsString()
+{
+  switch (this->DebugView)
+  {
+    case AmbientTerm:
+      return "AmbientTerm";
+    case DiffuseTerm:
+      return "DiffuseTerm";
+    case SpecularTerm:
+      return "SpecularTerm";
+    case EmissionTerm:
+      return "EmissionTerm";
+    case ShadingNormal:
+      return "ShadingNormal";
+    case SingleLight:
+      return "SingleLight";
+    case Final:
+    default:
+      return "Final";
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongPolyDataMapper::GetNumberOfShaderVariants()
+{
+  return static_cast<int>(this->Internal->Signatures.size());
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  // The stock test first: it also refreshes this primitive's light complexity.
+  bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+
+  vtkPhongShaderBuilder::PrimitiveState state;
+  state.LightComplexity = this->PrimitiveInfo[&cellBO].LastLightComplexity;
+  state.IsTriangles =
+    cellBO.PrimitiveType == PrimitiveTris || cellBO.PrimitiveType == PrimitiveTriStrips;
+  state.HasPointNormals = this->VBOs->GetNumberOfComponents("normalMC") == 3;
+  state.HasCellNormals = this->HaveCellNormals;
+  state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
+  state.HasGeometryShader = this->DrawingEdges(ren, act) || this->HaveWideLines(ren, act) ||
+    act->GetShaderProperty()->HasGeometryShaderCode();
+  state.DrawingVertices = this->DrawingVertices;
+  state.DrawingSelection = this->DrawingSelection;
+
+  vtkPhongShaderBuilder::Options options;
+  options.DebugView = this->DebugView;
+  options.DebugLightIndex = this->DebugLightIndex;
+
+  vtkPhongShaderBuilder::Plan plan = this->Internal->Builder->MakePlan(ren, act, state, options);
+  if (plan.Handled && this->Internal->FailedSignatures.count(plan.Signature))
+  {
+    plan = vtkPhongShaderBuilder::Plan();
+  }
+  auto& current = this->Internal->Plans[&cellBO];
+  if (current.Signature != plan.Signature)
+  {
+    rebuild = true;
+  }
+  current = std::move(plan);
+  return rebuild;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::BuildShaders(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::BuildShaders(shaders, ren, act);
+  this->Internal->BuiltShaders = true;
+  this->LastVertexSource = shaders[vtkShader::Vertex]->GetSource();
+  this->LastGeometrySource = shaders[vtkShader::Geometry]->GetSource();
+  this->LastFragmentSource = shaders[vtkShader::Fragment]->GetSource();
+  this->LastSignature = this->Internal->Plans[this->LastBoundBO].Signature;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::UpdateShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Internal->BuiltShaders = false;
+  const auto start = std::chrono::steady_clock::now();
+  this->Superclass::UpdateShaders(cellBO, ren, act);
+  if (!this->Internal->BuiltShaders)
+  {
+    return;
+  }
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+
+  const vtkPhongShaderBuilder::Plan& plan = this->Internal->Plans[&cellBO];
+  if (plan.Handled)
+  {
+    this->Internal->Signatures.insert(plan.Signature);
+  }
+  const std::size_t sourceHash = std::hash<std::string>{}(this->LastVertexSource + '\n' +
+    this->LastGeometrySource + '\n' + this->LastFragmentSource);
+  if (this->Internal->KnownSources.insert(sourceHash).second)
+  {
+    ++this->ShaderCompileCount;
+    this->LastShaderBuildTime = elapsed.count();
+  }
+
+  if (!cellBO.Program && plan.Handled)
+  {
+    // vtkShaderProgram has already printed the numbered source and the log.
+    const std::string signature = plan.Signature;
+    this->Internal->FailedSignatures.insert(signature);
+    vtkErrorMacro("The lighting shader variant [" << signature
+                                                  << "] failed to compile or link (the shader "
+                                                     "program's errors give the numbered source "
+                                                     "and the compiler log); this primitive falls "
+                                                     "back to VTK's own lighting.");
+    this->Superclass::UpdateShaders(cellBO, ren, act);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::ReplaceShaderLight(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  auto found = this->Internal->Plans.find(this->LastBoundBO);
+  if (found == this->Internal->Plans.end() || !found->second.Handled)
+  {
+    this->Superclass::ReplaceShaderLight(shaders, ren, act);
+    return;
+  }
+  this->Internal->Builder->ReplaceShaderValues(shaders, found->second);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::SetLightingShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  auto found = this->Internal->Plans.find(&cellBO);
+  if (found == this->Internal->Plans.end() || !found->second.Handled)
+  {
+    this->Superclass::SetLightingShaderParameters(cellBO, ren, act);
+    return;
+  }
+  this->Internal->Builder->SetLightUniforms(cellBO.Program, ren, found->second);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::SetPropertyShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetPropertyShaderParameters(cellBO, ren, act);
+  auto found = this->Internal->Plans.find(&cellBO);
+  if (found != this->Internal->Plans.end() && found->second.Handled)
+  {
+    this->Internal->Builder->SetMaterialUniforms(cellBO.Program, found->second);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::RenderPieceFinish(ren, act);
+  // Report parameter problems once, not every frame: only when they change.
+  const std::string problems = this->Internal->Builder->TakeProblems();
+  if (problems != this->Internal->ReportedProblems)
+  {
+    if (!problems.empty())
+    {
+      vtkErrorMacro("Bad lighting parameters (rendered with the documented substitutes):\n"
+        << problems);
+    }
+    this->Internal->ReportedProblems = problems;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  // Programs live in the window's shader cache; a new context compiles again.
+  this->Internal->KnownSources.clear();
+  this->Internal->Plans.clear();
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DebugView: " << this->GetDebugViewAsString() << "\n";
+  os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
+  os << indent << "ShaderCompileCount: " << this->ShaderCompileCount << "\n";
+  os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";
+  os << indent << "LastShaderBuildTime: " << this->LastShaderBuildTime << "\n";
+  os << indent << "LastShaderSignature: " << this->LastSignature << "\n";
+}

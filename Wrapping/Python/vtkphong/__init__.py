@@ -1,0 +1,22 @@
+"""vtkphong: exact Phong / Blinn-Phong lighting for VTK polydata.
+
+The classes are VTK's own Python wrappers of the vtkPhong C++ module and mix
+freely with ``vtkmodules``::
+
+    from vtkmodules.vtkRenderingCore import vtkActor
+    from vtkphong import vtkPhongPolyDataMapper, vtkPhongProperty
+
+    mapper = vtkPhongPolyDataMapper()
+    material = vtkPhongProperty()
+    material.SetLightingModelToBlinnPhong()
+    material.SetShininess(2000.0)  # vtkProperty.SetSpecularPower stops at 128
+    actor = vtkActor(mapper=mapper, property=material)
+
+The lighting equation is described in docs/lighting-model.md of the project.
+"""
+
+# The wrapped classes derive from VTK's OpenGL2 classes, and the OpenGL2
+# object factory must be registered before a render window is made.
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+
+from .vtkRenderingPhong import *  # noqa: F401,F403
