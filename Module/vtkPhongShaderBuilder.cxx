@@ -365,6 +365,29 @@ std::string vtkPhongShaderBuilder::ResolveTemplate(
 }
 
 //------------------------------------------------------------------------------
+const char* vtkPhongShaderBuilder::GetTemplate(const char* name)
+{
+  const std::string file(name ? name : "");
+  if (file == "vtkPhongLightingLib")
+  {
+    return vtkPhongLightingLib;
+  }
+  if (file == "vtkPhongFS")
+  {
+    return vtkPhongFS;
+  }
+  if (file == "vtkPhongVS")
+  {
+    return vtkPhongVS;
+  }
+  if (file == "vtkPhongGS")
+  {
+    return vtkPhongGS;
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongShaderBuilder::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, const Plan& plan)
 {

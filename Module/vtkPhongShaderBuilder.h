@@ -143,6 +143,12 @@ public:
    */
   std::string ResolveTemplate(const char* templateText, const char* section, const Plan& plan);
 
+  /**
+   * The embedded GLSL template of a file of Module/glsl by its name without extension
+   * (vtkPhongLightingLib, vtkPhongFS, vtkPhongVS, vtkPhongGS); nullptr for another name.
+   */
+  static const char* GetTemplate(const char* name);
+
 protected:
   vtkPhongShaderBuilder();
   ~vtkPhongShaderBuilder() override;

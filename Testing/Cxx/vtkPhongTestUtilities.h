@@ -6,9 +6,11 @@
 #define vtkPhongTestUtilities_h
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkImageData.h"
 #include "vtkCommand.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
@@ -25,10 +27,12 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkTexture.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -98,6 +102,43 @@ inline vtkSmartPointer<vtkLight> MakeSceneLight(
   return light;
 }
 
+// Adds a light to the scene's renderer and returns it for further settings.
+inline vtkLight* AddLight(Scene& scene, const double position[3], const double focalPoint[3],
+  const double color[3], bool positional, int lightType = VTK_LIGHT_TYPE_SCENE_LIGHT)
+{
+  auto light = MakeSceneLight(position, focalPoint, color, positional);
+  // A camera light's position and focal point are in camera coordinates.
+  light->SetLightType(lightType);
+  scene.Renderer->AddLight(light);
+  return light;
+}
+
+// An 8x8 checkerboard of two colours, for texture tests.
+inline vtkSmartPointer<vtkTexture> MakeCheckerTexture(
+  const unsigned char dark[3], const unsigned char light[3], int squares = 8)
+{
+  const int size = 64;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(size, size, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  for (int y = 0; y < size; ++y)
+  {
+    for (int x = 0; x < size; ++x)
+    {
+      const bool odd = (((x * squares) / size) + ((y * squares) / size)) % 2 != 0;
+      auto* pixel = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+      for (int c = 0; c < 3; ++c)
+      {
+        pixel[c] = odd ? light[c] : dark[c];
+      }
+    }
+  }
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOff();
+  return texture;
+}
+
 inline vtkActor* AddActor(Scene& scene, vtkPolyData* mesh, vtkProperty* property = nullptr)
 {
   vtkNew<vtkPhongPolyDataMapper> mapper;
@@ -110,6 +151,87 @@ inline vtkActor* AddActor(Scene& scene, vtkPolyData* mesh, vtkProperty* property
   }
   scene.Renderer->AddActor(actor);
   return actor;
+}
+
+// A coarse sphere (12 x 12) lit by a key light at 45 degrees with a sharp
+// highlight: the interpolation tests show how each mode resolves it.
+inline void BuildInterpolationScene(Scene& scene, vtkPhongProperty* material)
+{
+  scene.Renderer->AutomaticLightCreationOff();
+  const double key[3] = { 1.0, 1.0, 2.0 };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  AddLight(scene, key, origin, white, false);
+  material->SetColor(0.2, 0.7, 0.4);
+  material->SetAmbient(0.1);
+  material->SetDiffuse(0.8);
+  material->SetSpecular(0.7);
+  material->SetShininess(60.0);
+  AddActor(scene, MakeSphere(12), material);
+  scene.LookFromZ(2.3);
+}
+
+// The scene of the debug-view tests: a sphere on a floor under a directional,
+// a point and a spot light, with an emissive material.
+inline vtkPhongPolyDataMapper* BuildDebugScene(Scene& scene)
+{
+  scene.Renderer->AutomaticLightCreationOff();
+  scene.Renderer->SetAmbient(0.3, 0.3, 0.4);
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double sun[3] = { 1.0, 1.5, 2.0 };
+  const double pointAt[3] = { -0.7, 0.6, 0.7 };
+  const double spotAt[3] = { 0.8, -0.6, 1.2 };
+  const double spotTarget[3] = { 0.5, -0.5, 0.0 };
+  const double warm[3] = { 1.0, 0.85, 0.7 };
+  const double green[3] = { 0.4, 1.0, 0.4 };
+  const double blue[3] = { 0.5, 0.6, 1.0 };
+  AddLight(scene, sun, origin, warm, false)->SetIntensity(0.7);
+  vtkLight* point = AddLight(scene, pointAt, origin, green, true);
+  point->SetConeAngle(180.0);
+  point->SetAttenuationValues(1.0, 0.0, 1.0);
+  point->SetAmbientColor(0.1, 0.3, 0.1);
+  vtkLight* spot = AddLight(scene, spotAt, spotTarget, blue, true);
+  spot->SetConeAngle(30.0);
+  spot->SetExponent(2.0);
+
+  vtkNew<vtkPhongProperty> floor;
+  floor->SetColor(0.8, 0.8, 0.8);
+  floor->SetAmbient(0.2);
+  floor->SetSpecular(0.3);
+  floor->SetShininess(30.0);
+  AddActor(scene, MakePlane(1.5, 60), floor);
+
+  vtkNew<vtkPhongProperty> ball;
+  ball->SetColor(0.9, 0.5, 0.3);
+  ball->SetAmbient(0.3);
+  ball->SetSpecular(0.6);
+  ball->SetShininess(60.0);
+  ball->SetEmission(0.0, 0.0, 0.25);
+  vtkActor* sphere = AddActor(scene, MakeSphere(64, 0.4), ball);
+  sphere->SetPosition(0.0, 0.0, 0.4);
+
+  scene.LookFromZ(4.5);
+  scene.Renderer->GetActiveCamera()->Elevation(-40.0);
+  scene.Renderer->GetActiveCamera()->OrthogonalizeViewUp();
+  scene.Renderer->ResetCameraClippingRange();
+
+  // Every actor shares the debug view: return one mapper, set the rest alike.
+  return vtkPhongPolyDataMapper::SafeDownCast(sphere->GetMapper());
+}
+
+// Sets the debug view on every vtkPhong mapper of the scene.
+inline void SetDebugView(Scene& scene, int view, int lightIndex = 0)
+{
+  vtkActorCollection* actors = scene.Renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* actor = actors->GetNextActor())
+  {
+    if (auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper()))
+    {
+      mapper->SetDebugView(view);
+      mapper->SetDebugLightIndex(lightIndex);
+    }
+  }
 }
 
 // Fails (returns false) if OpenGL has recorded an error since the last check.
@@ -181,6 +303,62 @@ inline const unsigned char* PixelAt(vtkImageData* image, int x, int y)
 {
   return static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
 }
+
+// Largest per-channel difference between two snapshots of the same size.
+inline int MaxDifference(vtkImageData* a, vtkImageData* b)
+{
+  auto* pa = static_cast<unsigned char*>(a->GetScalarPointer());
+  auto* pb = static_cast<unsigned char*>(b->GetScalarPointer());
+  const vtkIdType count = a->GetNumberOfPoints() * a->GetNumberOfScalarComponents();
+  int largest = 0;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    largest = std::max(largest, std::abs(int(pa[i]) - int(pb[i])));
+  }
+  return largest;
+}
+
+// How many pixels differ by more than threshold levels in some channel.
+inline int CountDifferentPixels(vtkImageData* a, vtkImageData* b, int threshold)
+{
+  auto* pa = static_cast<unsigned char*>(a->GetScalarPointer());
+  auto* pb = static_cast<unsigned char*>(b->GetScalarPointer());
+  const int channels = a->GetNumberOfScalarComponents();
+  int count = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    for (int c = 0; c < channels; ++c)
+    {
+      if (std::abs(int(pa[i * channels + c]) - int(pb[i * channels + c])) > threshold)
+      {
+        ++count;
+        break;
+      }
+    }
+  }
+  return count;
+}
+
+// Reports a failed expectation and remembers it.
+struct Checks
+{
+  bool Passed = true;
+  void Expect(bool condition, const std::string& what)
+  {
+    if (!condition)
+    {
+      std::cerr << "Check failed: " << what << "\n";
+      this->Passed = false;
+    }
+  }
+  // |value - expected| <= tolerance, with both printed on failure.
+  void Near(double value, double expected, double tolerance, const std::string& what)
+  {
+    this->Expect(std::abs(value - expected) <= tolerance,
+      what + ": got " + std::to_string(value) + ", expected " + std::to_string(expected) +
+        " +- " + std::to_string(tolerance));
+  }
+};
 
 // Compare with the baseline and check GL errors; returns the test's exit code.
 inline int Finish(int argc, char* argv[], vtkRenderWindow* window, bool otherChecksPassed = true)

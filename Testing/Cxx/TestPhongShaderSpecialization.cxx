@@ -1,0 +1,119 @@
+// The generated shader contains only what the scene needs: no specular code
+// when ks = 0, no attenuation code without positional lights, no spot code
+// without spots, no emission without a vtkPhongProperty, per-vertex lighting in
+// the vertex shader only, and no template directive left over. Also resolves
+// every template section under many flag combinations without an error.
+
+#include "vtkPhongTestUtilities.h"
+
+#include "vtkPhongShaderBuilder.h"
+
+namespace
+{
+bool Has(const std::string& source, const char* text)
+{
+  return source.find(text) != std::string::npos;
+}
+}
+
+int TestPhongShaderSpecialization(int, char*[])
+{
+  vtkPhongTest::Checks checks;
+  vtkPhongTest::Scene scene(64, 64);
+  scene.Renderer->AutomaticLightCreationOff();
+  const double key[3] = { 0.5, 0.5, 1.0 };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  vtkPhongTest::AddLight(scene, key, origin, white, false);
+  vtkNew<vtkProperty> plain; // a plain vtkProperty: VTK's defaults, ks = 0, ka = 0
+  vtkActor* actor = vtkPhongTest::AddActor(scene, vtkPhongTest::MakeSphere(32), plain);
+  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
+  scene.LookFromZ(2.5);
+  auto render = [&]() {
+    scene.Window->Render();
+    return std::string(mapper->GetLastFragmentShaderSource());
+  };
+
+  std::string fs = render();
+  checks.Expect(Has(fs, "phongDirectionalLightDiffuse"), "diffuse code for the directional light");
+  checks.Expect(!Has(fs, "phongSpecular") && !Has(fs, "specularLight"), "no specular code at ks = 0");
+  checks.Expect(!Has(fs, "phongDistanceAttenuation"), "no attenuation without positional lights");
+  checks.Expect(!Has(fs, "phongPointLight") && !Has(fs, "phongSpotLight"), "no point or spot code");
+  checks.Expect(!Has(fs, "phongAmbientLight"), "no ambient code at ka = 0");
+  checks.Expect(!Has(fs, "phongEmission"), "no emission for a plain vtkProperty");
+  checks.Expect(!Has(fs, "//PHONG_") && !Has(fs, "@"), "no template directive left");
+
+  plain->SetSpecular(0.4);
+  plain->SetAmbient(0.2);
+  fs = render();
+  checks.Expect(Has(fs, "phongSpecular(") && Has(fs, "2.0 * NdotL * N - L"), "Phong lobe code");
+  checks.Expect(!Has(fs, "halfway"), "no Blinn code with the Phong lobe");
+  checks.Expect(Has(fs, "phongAmbientLight"), "ambient code at ka > 0");
+
+  vtkLight* point = vtkPhongTest::AddLight(scene, key, origin, white, true);
+  point->SetConeAngle(180.0);
+  fs = render();
+  checks.Expect(Has(fs, "phongDistanceAttenuation") && Has(fs, "phongPointLightPositionVC"),
+    "attenuation code with a point light");
+  checks.Expect(!Has(fs, "phongSpotLight"), "no spot code without spots");
+
+  point->SetConeAngle(30.0);
+  fs = render();
+  checks.Expect(Has(fs, "phongSpotLightCosCutoff") && !Has(fs, "phongPointLightPositionVC"),
+    "the light is now a spot: spot code only");
+  checks.Expect(!Has(fs, "smoothstep"), "no soft edge code unless asked");
+
+  vtkNew<vtkPhongProperty> material;
+  material->SetSpecular(0.4);
+  material->SetLightingModelToBlinnPhong();
+  material->SoftSpotEdgeOn();
+  actor->SetProperty(material);
+  fs = render();
+  checks.Expect(Has(fs, "halfway") && !Has(fs, "2.0 * NdotL * N - L"), "Blinn lobe code only");
+  checks.Expect(Has(fs, "smoothstep"), "soft edge code");
+  checks.Expect(Has(fs, "phongEmission"), "emission code for a vtkPhongProperty");
+
+  material->SetInterpolationToPerVertexGouraud();
+  fs = render();
+  const std::string vs = mapper->GetLastVertexShaderSource();
+  checks.Expect(Has(vs, "phongSumLights(") && !Has(fs, "phongSumLights("),
+    "per-vertex Gouraud lights in the vertex shader only");
+
+  mapper->SetDebugViewToShadingNormal();
+  fs = render();
+  checks.Expect(!Has(fs, "phongSumLights") && Has(fs, "0.5 * phongNormalVC + 0.5"),
+    "the normal view has no light code");
+
+  // Every section of every template resolves cleanly under flag sets that
+  // switch each conditional both ways.
+  vtkNew<vtkPhongShaderBuilder> builder;
+  vtkPhongTest::ErrorCollector errors;
+  errors.Observe(builder);
+  const std::vector<std::vector<const char*>> flagSets = {
+    {},
+    { "AMBIENT", "DIFFUSE", "SPECULAR", "DIFFUSE_OR_SPECULAR", "EMISSION", "POSITIONAL_AMBIENT",
+      "LIGHT_SUMS", "DIRECTIONAL", "POINT", "SPOT", "POSITIONAL", "LOBE_PHONG", "SMOOTH_TERMINATOR",
+      "SOFT_SPOT_EDGE", "PARALLEL", "PER_VERTEX", "SUMS_PER_VERTEX", "TWO_SIDED", "BACK_MATERIAL",
+      "SHADING_NORMAL", "NORMAL_FALLBACK", "VIEW_VECTOR", "DEBUG_NORMAL" },
+    { "DIFFUSE", "LIGHT_SUMS", "DIRECTIONAL", "SUMS_PER_FRAGMENT", "SHADING_NORMAL", "ONE_SIDED",
+      "VIEW_VECTOR", "LOBE_BLINN", "SPECULAR" },
+  };
+  const char* sections[][2] = { { "vtkPhongLightingLib", "Sums" },
+    { "vtkPhongLightingLib", "Lights" }, { "vtkPhongFS", "Dec" }, { "vtkPhongFS", "UniformFlow" },
+    { "vtkPhongFS", "Impl" }, { "vtkPhongFS", "PostTexture" }, { "vtkPhongVS", "Dec" },
+    { "vtkPhongVS", "Impl" }, { "vtkPhongGS", "Dec" }, { "vtkPhongGS", "Impl" } };
+  for (const auto& flags : flagSets)
+  {
+    vtkPhongShaderBuilder::Plan plan;
+    plan.Flags.insert(flags.begin(), flags.end());
+    for (const auto& section : sections)
+    {
+      const std::string code = builder->ResolveTemplate(
+        vtkPhongShaderBuilder::GetTemplate(section[0]), section[1], plan);
+      checks.Expect(!Has(code, "//PHONG_") && !Has(code, "@"),
+        std::string(section[0]) + " " + section[1] + ": directives resolved");
+    }
+  }
+  checks.Expect(errors.Messages.empty(), "the templates are well formed");
+  return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
+}
