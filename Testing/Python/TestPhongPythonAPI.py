@@ -1,0 +1,60 @@
+"""vtkphong from Python: every class and the documented API by name, the
+defaults, clamps and errors, and the enums, through VTK's own wrappers."""
+
+import vtkphong
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkRenderingCore import vtkActor, vtkProperty
+from vtkphong_testing import Checks
+
+checks = Checks()
+
+for name in ("vtkPhongPolyDataMapper", "vtkPhongProperty", "vtkPhongOFFReader"):
+    cls = getattr(vtkphong, name, None)
+    checks.expect(cls is not None, "vtkphong exposes " + name)
+    checks.expect(cls is not None and bool(cls.__doc__), name + " has a docstring")
+
+material = vtkphong.vtkPhongProperty()
+checks.expect(isinstance(material, vtkProperty), "vtkPhongProperty is a vtkProperty")
+for method in ("SetLightingModelToPhong", "SetLightingModelToBlinnPhong",
+               "SetLightingModelToNormalizedPhong", "SetLightingModelToNormalizedBlinnPhong",
+               "SetShininess", "SetEmission", "SetSmoothTerminator", "SmoothTerminatorOn",
+               "SetSoftSpotEdge", "SetSpotEdgeWidth", "SetPerVertexGouraud",
+               "SetInterpolationToPerVertexGouraud"):
+    checks.expect(hasattr(material, method), "vtkPhongProperty." + method)
+
+checks.expect(material.GetLightingModel() == vtkphong.vtkPhongProperty.Phong, "default lobe Phong")
+material.SetLightingModelToNormalizedBlinnPhong()
+checks.expect(material.GetLightingModelAsString() == "NormalizedBlinnPhong", "lobe by name")
+checks.expect(material.GetShininess() == 1.0, "default shininess is VTK's SpecularPower, 1")
+material.SetShininess(250000.0)
+checks.expect(material.GetShininess() == 250000.0, "shininess beyond 128 is kept")
+checks.expect(material.GetSpecularPower() == 128.0, "SpecularPower stays in VTK's range")
+material.SetEmission(0.1, 0.2, 0.3)
+checks.expect(material.GetEmission() == (0.1, 0.2, 0.3), "emission round trip")
+material.SetInterpolationToPerVertexGouraud()
+checks.expect(material.GetPerVertexGouraud() and material.GetInterpolationAsString() == "Gouraud",
+              "per-vertex Gouraud sets both settings")
+
+messages = []
+material.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: messages.append(event))
+material.AddObserver(vtkCommand.WarningEvent, lambda caller, event: messages.append(event))
+material.SetShininess(float("nan"))
+checks.expect(material.GetShininess() == 250000.0 and len(messages) == 1, "NaN shininess refused")
+material.SetShininess(-1.0)
+checks.expect(material.GetShininess() == 0.0 and len(messages) == 2, "negative shininess clamped")
+
+mapper = vtkphong.vtkPhongPolyDataMapper()
+checks.expect(mapper.GetDebugView() == vtkphong.vtkPhongPolyDataMapper.Final, "default view")
+for view in ("AmbientTerm", "DiffuseTerm", "SpecularTerm", "EmissionTerm", "ShadingNormal",
+             "SingleLight", "Final"):
+    getattr(mapper, "SetDebugViewTo" + view)()
+    checks.expect(mapper.GetDebugViewAsString() == view, "debug view " + view)
+mapper.SetDebugLightIndex(3)
+checks.expect(mapper.GetDebugLightIndex() == 3, "debug light index")
+checks.expect(mapper.GetShaderCompileCount() == 0 and mapper.GetNumberOfShaderVariants() == 0,
+              "no shader before the first render")
+actor = vtkActor()
+actor.SetMapper(mapper)
+actor.SetProperty(material)
+checks.expect(actor.GetProperty() is material, "an actor takes a vtkPhongProperty")
+checks.exit()
