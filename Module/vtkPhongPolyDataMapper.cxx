@@ -1,15 +1,20 @@
 #include "vtkPhongPolyDataMapper.h"
 
 #include "vtkActor.h"
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPhongShaderBuilder.h"
 #include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <set>
 
@@ -28,7 +33,59 @@ struct vtkPhongPolyDataMapper::Internals
   std::set<std::size_t> KnownSources;
   bool BuiltShaders = false;
   std::string ReportedProblems;
+
+  // Whether a normals array holds unusable (zero, NaN, infinite) vectors,
+  // cached by the array and its modification time: a scan per change.
+  struct NormalsScan
+  {
+    vtkDataArray* Array = nullptr;
+    vtkMTimeType Time = 0;
+    bool Unusable = false;
+  };
+  NormalsScan PointNormals;
+  NormalsScan CellNormals;
+  bool HasUnusableVectors(vtkDataArray* normals, NormalsScan& cache);
 };
+
+//------------------------------------------------------------------------------
+bool vtkPhongPolyDataMapper::Internals::HasUnusableVectors(
+  vtkDataArray* normals, NormalsScan& cache)
+{
+  if (!normals)
+  {
+    return false;
+  }
+  if (cache.Array == normals && cache.Time == normals->GetMTime())
+  {
+    return cache.Unusable;
+  }
+  cache.Array = normals;
+  cache.Time = normals->GetMTime();
+  cache.Unusable = false;
+  auto unusable = [](double x, double y, double z) {
+    const double lengthSquared = x * x + y * y + z * z;
+    return !(lengthSquared > 0.0) || !std::isfinite(lengthSquared);
+  };
+  const vtkIdType count = normals->GetNumberOfTuples();
+  if (auto* floats = vtkFloatArray::SafeDownCast(normals))
+  {
+    const float* v = floats->GetPointer(0);
+    for (vtkIdType i = 0; i < count && !cache.Unusable; ++i, v += 3)
+    {
+      cache.Unusable = unusable(v[0], v[1], v[2]);
+    }
+  }
+  else
+  {
+    double v[3];
+    for (vtkIdType i = 0; i < count && !cache.Unusable; ++i)
+    {
+      normals->GetTuple(i, v);
+      cache.Unusable = unusable(v[0], v[1], v[2]);
+    }
+  }
+  return cache.Unusable;
+}
 
 //------------------------------------------------------------------------------
 vtkPhongPolyDataMapper::vtkPhongPolyDataMapper()
@@ -81,6 +138,16 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
     cellBO.PrimitiveType == PrimitiveTris || cellBO.PrimitiveType == PrimitiveTriStrips;
   state.HasPointNormals = this->VBOs->GetNumberOfComponents("normalMC") == 3;
   state.HasCellNormals = this->HaveCellNormals;
+  if (state.HasPointNormals)
+  {
+    state.NormalsMayBeInvalid = this->Internal->HasUnusableVectors(
+      this->CurrentInput->GetPointData()->GetNormals(), this->Internal->PointNormals);
+  }
+  else if (state.HasCellNormals)
+  {
+    state.NormalsMayBeInvalid = this->Internal->HasUnusableVectors(
+      this->CurrentInput->GetCellData()->GetNormals(), this->Internal->CellNormals);
+  }
   state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
   state.HasGeometryShader = this->DrawingEdges(ren, act) || this->HaveWideLines(ren, act) ||
     act->GetShaderProperty()->HasGeometryShaderCode();

@@ -256,12 +256,14 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   const bool shadingNormal = (lightSums && !perVertex) || view == ShadingNormal;
   set("SHADING_NORMAL", shadingNormal);
   set("ONE_SIDED", shadingNormal && !twoSided);
-  // Normals from the data (point or cell arrays) may be zero or NaN; VTK's own
-  // screen-space normals are never used with a fallback.
-  const bool normalFallback =
-    shadingNormal && (state.HasPointNormals || state.HasCellNormals) && !state.NormalsFromShape;
+  // Zero, NaN or infinite normals in the data take the face's geometric normal
+  // from screen-space derivatives, which cost every fragment: only when the
+  // mapper found such normals. Otherwise a cheap guard covers normals that
+  // cancel out when interpolated.
+  const bool normalFallback = shadingNormal && state.NormalsMayBeInvalid &&
+    (state.HasPointNormals || state.HasCellNormals) && !state.NormalsFromShape;
   set("NORMAL_FALLBACK", normalFallback);
-  set("VIEW_VECTOR", (lightSums && !perVertex) || normalFallback);
+  set("VIEW_VECTOR", shadingNormal);
 
   std::ostringstream signature;
   for (const auto& flag : flags)

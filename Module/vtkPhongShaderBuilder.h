@@ -74,6 +74,7 @@ public:
     bool IsTriangles = false;      ///< polygons or triangle strips
     bool HasPointNormals = false;  ///< a 3-component normalMC vertex buffer exists
     bool HasCellNormals = false;   ///< normals come from a cell normal texture
+    bool NormalsMayBeInvalid = false; ///< the normals array holds zero, NaN or Inf vectors
     bool NormalsFromShape = false; ///< points drawn as spheres or lines as tubes
     bool HasGeometryShader = false;
     bool DrawingVertices = false;  ///< the vertex-visibility pass

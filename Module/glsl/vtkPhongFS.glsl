@@ -57,6 +57,12 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_ENDIF
 //PHONG_IF SHADING_NORMAL
   vec3 phongNormalVC = normalVCVSOutput;
+//PHONG_IF !NORMAL_FALLBACK
+  if (!(dot(phongNormalVC, phongNormalVC) > 0.5)) // interpolated normals that cancel out
+  {
+    phongNormalVC = phongViewVC;
+  }
+//PHONG_ENDIF
 //PHONG_IF NORMAL_FALLBACK
   if (!(dot(phongNormalVC, phongNormalVC) > 0.5)) // zero-length or NaN normal
   {

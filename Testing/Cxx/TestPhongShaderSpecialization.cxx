@@ -42,6 +42,7 @@ int TestPhongShaderSpecialization(int, char*[])
   checks.Expect(!Has(fs, "phongAmbientLight"), "no ambient code at ka = 0");
   checks.Expect(!Has(fs, "phongEmission"), "no emission for a plain vtkProperty");
   checks.Expect(!Has(fs, "//PHONG_") && !Has(fs, "@"), "no template directive left");
+  checks.Expect(!Has(fs, "dFdx(vertexVC"), "no screen-space normal fallback for clean normals");
 
   plain->SetSpecular(0.4);
   plain->SetAmbient(0.2);
@@ -78,6 +79,14 @@ int TestPhongShaderSpecialization(int, char*[])
   const std::string vs = mapper->GetLastVertexShaderSource();
   checks.Expect(Has(vs, "phongSumLights(") && !Has(fs, "phongSumLights("),
     "per-vertex Gouraud lights in the vertex shader only");
+
+  // One NaN normal: the screen-space fallback appears (a scan per change of the array).
+  material->SetInterpolationToPhong();
+  auto mesh = vtkPhongTest::MakeSphere(32);
+  mesh->GetPointData()->GetNormals()->SetTuple3(7, std::nan(""), 0.0, 0.0);
+  mapper->SetInputData(mesh);
+  fs = render();
+  checks.Expect(Has(fs, "dFdx(vertexVC"), "a NaN normal brings the screen-space fallback");
 
   mapper->SetDebugViewToShadingNormal();
   fs = render();

@@ -24,6 +24,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
+#include "vtkPhongSharedDisplay.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -56,6 +57,7 @@ struct Scene
 
   explicit Scene(int width = 300, int height = 300)
   {
+    UseSharedDisplay(this->Window);
     this->Window->SetSize(width, height);
     this->Window->SetMultiSamples(0); // exact, repeatable pixels for the baselines
     this->Window->SetOffScreenRendering(1);
