@@ -100,7 +100,8 @@ bool ParseColor(const std::vector<std::string>& tokens, size_t first, unsigned c
       return false;
     }
     value = decimal ? value * 255.0 : value;
-    rgba[c] = static_cast<unsigned char>(std::min(std::max(value + (decimal ? 0.5 : 0.0), 0.0), 255.0));
+    rgba[c] =
+      static_cast<unsigned char>(std::min(std::max(value + (decimal ? 0.5 : 0.0), 0.0), 255.0));
   }
   return true;
 }
@@ -153,7 +154,8 @@ int vtkPhongOFFReader::RequestData(
     return 0;
   }
   OFFLines lines(input);
-  auto fail = [&](const std::string& why) {
+  auto fail = [&](const std::string& why)
+  {
     vtkErrorMacro(<< this->FileName << ", line " << lines.LineNumber << ": " << why);
     output->Initialize();
     return 0;

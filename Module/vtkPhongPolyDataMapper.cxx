@@ -7,9 +7,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPhongShaderBuilder.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPhongShaderBuilder.h"
 #include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
 
@@ -62,7 +62,8 @@ bool vtkPhongPolyDataMapper::Internals::HasUnusableVectors(
   cache.Array = normals;
   cache.Time = normals->GetMTime();
   cache.Unusable = false;
-  auto unusable = [](double x, double y, double z) {
+  auto unusable = [](double x, double y, double z)
+  {
     const double lengthSquared = x * x + y * y + z * z;
     return !(lengthSquared > 0.0) || !std::isfinite(lengthSquared);
   };
@@ -185,8 +186,7 @@ void vtkPhongPolyDataMapper::BuildShaders(
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::UpdateShaders(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+void vtkPhongPolyDataMapper::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   this->Internal->BuiltShaders = false;
   const auto start = std::chrono::steady_clock::now();
@@ -202,8 +202,8 @@ void vtkPhongPolyDataMapper::UpdateShaders(
   {
     this->Internal->Signatures.insert(plan.Signature);
   }
-  const std::size_t sourceHash = std::hash<std::string>{}(this->LastVertexSource + '\n' +
-    this->LastGeometrySource + '\n' + this->LastFragmentSource);
+  const std::size_t sourceHash = std::hash<std::string>{}(
+    this->LastVertexSource + '\n' + this->LastGeometrySource + '\n' + this->LastFragmentSource);
   if (this->Internal->KnownSources.insert(sourceHash).second)
   {
     ++this->ShaderCompileCount;

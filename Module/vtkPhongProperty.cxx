@@ -39,8 +39,8 @@ void vtkPhongProperty::SetShininess(double shininess)
 {
   if (std::isnan(shininess))
   {
-    vtkErrorMacro("Shininess must be a number in [0, 1e6]; NaN refused, keeping "
-      << this->Shininess << ".");
+    vtkErrorMacro(
+      "Shininess must be a number in [0, 1e6]; NaN refused, keeping " << this->Shininess << ".");
     return;
   }
   if (shininess < 0.0)
@@ -82,8 +82,8 @@ void vtkPhongProperty::SetEmission(double red, double green, double blue)
   {
     if (!std::isfinite(component))
     {
-      vtkErrorMacro("Emission components must be finite; (" << red << ", " << green << ", "
-                                                            << blue << ") refused.");
+      vtkErrorMacro("Emission components must be finite; (" << red << ", " << green << ", " << blue
+                                                            << ") refused.");
       return;
     }
     if (component < 0.0)

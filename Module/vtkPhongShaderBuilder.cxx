@@ -203,13 +203,14 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
     (IsPositive(front->GetDiffuse()) || IsPositive(back->GetDiffuse()));
   const bool specular = wantSpecular && haveLights &&
     (IsPositive(front->GetSpecular()) || IsPositive(back->GetSpecular()));
-  const bool emission = wantEmission &&
-    (vtkPhongProperty::SafeDownCast(front) || vtkPhongProperty::SafeDownCast(back));
+  const bool emission =
+    wantEmission && (vtkPhongProperty::SafeDownCast(front) || vtkPhongProperty::SafeDownCast(back));
   const bool positional = !plan.PointLights.empty() || !plan.SpotLights.empty();
   const bool positionalAmbient = ambient && positional;
   const bool lightSums = diffuse || specular || positionalAmbient;
 
-  auto set = [&flags](const char* flag, bool on) {
+  auto set = [&flags](const char* flag, bool on)
+  {
     if (on)
     {
       flags.insert(flag);
@@ -243,8 +244,8 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   set("PARALLEL", camera && camera->GetParallelProjection());
 
   const bool perVertex = lightSums && phongFront && phongFront->GetPerVertexGouraud() &&
-    front->GetInterpolation() == VTK_GOURAUD && state.HasPointNormals &&
-    !state.NormalsFromShape && view != ShadingNormal;
+    front->GetInterpolation() == VTK_GOURAUD && state.HasPointNormals && !state.NormalsFromShape &&
+    view != ShadingNormal;
   set("PER_VERTEX", perVertex);
   set("SUMS_PER_VERTEX", lightSums && perVertex);
   set("SUMS_PER_FRAGMENT", lightSums && !perVertex);
@@ -398,8 +399,8 @@ void vtkPhongShaderBuilder::ReplaceShaderValues(
   const std::string lights = this->ResolveTemplate(vtkPhongLightingLib, "Lights", plan);
 
   std::string fragment = shaders[vtkShader::Fragment]->GetSource();
-  std::string fragmentDec = sums + (perVertex ? std::string() : lights) +
-    this->ResolveTemplate(vtkPhongFS, "Dec", plan);
+  std::string fragmentDec =
+    sums + (perVertex ? std::string() : lights) + this->ResolveTemplate(vtkPhongFS, "Dec", plan);
   vtkShaderProgram::Substitute(
     fragment, "//VTK::Light::Dec", fragmentDec + "//VTK::Light::Dec", false);
   const std::string uniformFlow = this->ResolveTemplate(vtkPhongFS, "UniformFlow", plan);
@@ -500,8 +501,8 @@ LightGeometry GeometryOf(vtkLight* light, vtkMatrix4x4* worldToView, vtkTransfor
 template <typename T>
 void AppendRGB(std::vector<float>& packed, const T& rgb)
 {
-  packed.insert(packed.end(), { static_cast<float>(rgb[0]), static_cast<float>(rgb[1]),
-                                static_cast<float>(rgb[2]) });
+  packed.insert(packed.end(),
+    { static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]) });
 }
 
 void SetVec3Array(vtkShaderProgram* program, const char* name, const std::vector<float>& values)
@@ -522,7 +523,8 @@ void vtkPhongShaderBuilder::SetLightUniforms(
 
   // A light's colours times its intensity, zero for lights hidden by the
   // single-light view; non-finite or negative values are reported and zeroed.
-  auto valuesOf = [&](vtkLight* light, int index) {
+  auto valuesOf = [&](vtkLight* light, int index)
+  {
     LightValues values;
     if (singleLight && light != plan.DebugLight)
     {
@@ -537,7 +539,8 @@ void vtkPhongShaderBuilder::SetLightUniforms(
       this->AddProblem(problem.str());
       intensity = 0.0;
     }
-    auto scaled = [&](const double* color, const char* which, RGB& out) {
+    auto scaled = [&](const double* color, const char* which, RGB& out)
+    {
       for (int c = 0; c < 3; ++c)
       {
         double value = color[c];
@@ -636,7 +639,8 @@ void vtkPhongShaderBuilder::SetLightUniforms(
   }
 
   // Attenuation coefficients as uploaded: finite and >= 0.
-  auto attenuationOf = [&](vtkLight* light) {
+  auto attenuationOf = [&](vtkLight* light)
+  {
     RGB attenuation;
     const double* values = light->GetAttenuationValues();
     for (int c = 0; c < 3; ++c)
@@ -655,8 +659,9 @@ void vtkPhongShaderBuilder::SetLightUniforms(
     return attenuation;
   };
 
-  auto uploadPositional = [&](const std::vector<vtkLight*>& kindLights, const char* prefix,
-                            bool isSpot) {
+  auto uploadPositional =
+    [&](const std::vector<vtkLight*>& kindLights, const char* prefix, bool isSpot)
+  {
     std::vector<float> position, attenuation, ambient, axis, cosCutoff, exponent, cosInner;
     diffuse.clear();
     specular.clear();
@@ -728,7 +733,8 @@ void vtkPhongShaderBuilder::SetLightUniforms(
 
   if (plan.Has("EMISSION"))
   {
-    auto emissionOf = [](vtkProperty* material) {
+    auto emissionOf = [](vtkProperty* material)
+    {
       auto* phong = vtkPhongProperty::SafeDownCast(material);
       RGB emission = { 0.f, 0.f, 0.f };
       if (phong)
@@ -757,10 +763,12 @@ void vtkPhongShaderBuilder::SetMaterialUniforms(vtkShaderProgram* program, const
 {
   // VTK uploaded SpecularPower (clamped to 128), the raw specular colour and
   // the colours as they are; replace them with the contract's values.
-  auto upload = [&](vtkProperty* material, const char* suffix) {
+  auto upload = [&](vtkProperty* material, const char* suffix)
+  {
     const std::string side(suffix);
     const char* sideName = side.empty() ? "front" : "back";
-    auto checkedColor = [&](const double* color, const char* which, double scale) {
+    auto checkedColor = [&](const double* color, const char* which, double scale)
+    {
       RGB out;
       for (int c = 0; c < 3; ++c)
       {
@@ -768,8 +776,8 @@ void vtkPhongShaderBuilder::SetMaterialUniforms(vtkShaderProgram* program, const
         if (!std::isfinite(value))
         {
           std::ostringstream problem;
-          problem << "The " << sideName << " material's " << which << " colour component "
-                  << value << " is not finite; it is treated as 0.";
+          problem << "The " << sideName << " material's " << which << " colour component " << value
+                  << " is not finite; it is treated as 0.";
           this->AddProblem(problem.str());
           value = 0.0;
         }
@@ -777,7 +785,8 @@ void vtkPhongShaderBuilder::SetMaterialUniforms(vtkShaderProgram* program, const
       }
       return out;
     };
-    auto checkedCoefficient = [&](double value, const char* which) {
+    auto checkedCoefficient = [&](double value, const char* which)
+    {
       if (!std::isfinite(value))
       {
         std::ostringstream problem;
@@ -798,13 +807,13 @@ void vtkPhongShaderBuilder::SetMaterialUniforms(vtkShaderProgram* program, const
         checkedColor(material->GetAmbientColor(), "ambient", 1.0).data());
       program->SetUniform3f(("diffuseColorUniform" + side).c_str(),
         checkedColor(material->GetDiffuseColor(), "diffuse", 1.0).data());
-      program->SetUniformf(("opacityUniform" + side).c_str(),
-        checkedCoefficient(material->GetOpacity(), "opacity"));
+      program->SetUniformf(
+        ("opacityUniform" + side).c_str(), checkedCoefficient(material->GetOpacity(), "opacity"));
     }
-    program->SetUniformf(("ambientIntensity" + side).c_str(),
-      checkedCoefficient(material->GetAmbient(), "ambient"));
-    program->SetUniformf(("diffuseIntensity" + side).c_str(),
-      checkedCoefficient(material->GetDiffuse(), "diffuse"));
+    program->SetUniformf(
+      ("ambientIntensity" + side).c_str(), checkedCoefficient(material->GetAmbient(), "ambient"));
+    program->SetUniformf(
+      ("diffuseIntensity" + side).c_str(), checkedCoefficient(material->GetDiffuse(), "diffuse"));
     if (plan.Has("SPECULAR"))
     {
       program->SetUniformf(("specularIntensity" + side).c_str(),

@@ -70,12 +70,12 @@ public:
    */
   struct PrimitiveState
   {
-    int LightComplexity = 0;       ///< the stock mapper's LastLightComplexity (0: unlit)
-    bool IsTriangles = false;      ///< polygons or triangle strips
-    bool HasPointNormals = false;  ///< a 3-component normalMC vertex buffer exists
-    bool HasCellNormals = false;   ///< normals come from a cell normal texture
+    int LightComplexity = 0;          ///< the stock mapper's LastLightComplexity (0: unlit)
+    bool IsTriangles = false;         ///< polygons or triangle strips
+    bool HasPointNormals = false;     ///< a 3-component normalMC vertex buffer exists
+    bool HasCellNormals = false;      ///< normals come from a cell normal texture
     bool NormalsMayBeInvalid = false; ///< the normals array holds zero, NaN or Inf vectors
-    bool NormalsFromShape = false; ///< points drawn as spheres or lines as tubes
+    bool NormalsFromShape = false;    ///< points drawn as spheres or lines as tubes
     bool HasGeometryShader = false;
     bool DrawingVertices = false;  ///< the vertex-visibility pass
     bool DrawingSelection = false; ///< the selection-highlight pass

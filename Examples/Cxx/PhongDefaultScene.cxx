@@ -59,7 +59,8 @@ int main(int argc, char* argv[])
 
   double bounds[6];
   mesh->GetBounds(bounds);
-  const double size = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  const double size =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
   const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
     0.5 * (bounds[4] + bounds[5]) };
 
@@ -166,8 +167,8 @@ int main(int argc, char* argv[])
     std::cerr << "error: could not write " << argv[2] << "\n";
     return EXIT_FAILURE;
   }
-  std::cout << "Rendered " << mesh->GetNumberOfCells() << " triangles of " << argv[1]
-            << " with " << meshMapper->GetLastShaderSignature() << "\n";
+  std::cout << "Rendered " << mesh->GetNumberOfCells() << " triangles of " << argv[1] << " with "
+            << meshMapper->GetLastShaderSignature() << "\n";
   std::cout << argv[2] << "\n";
   return EXIT_SUCCESS;
 }

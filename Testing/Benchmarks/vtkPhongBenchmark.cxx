@@ -132,8 +132,8 @@ struct FrameTimer
 
 void ShaderSection(const char* meshFile, bool quick)
 {
-  std::printf("\n== Shader variants and build time (default scene: %s) ==\n",
-    meshFile ? meshFile : "sphere");
+  std::printf(
+    "\n== Shader variants and build time (default scene: %s) ==\n", meshFile ? meshFile : "sphere");
   vtkSmartPointer<vtkPolyData> mesh = Sphere(quick ? 32 : 128);
   if (meshFile)
   {
@@ -218,7 +218,8 @@ void ShaderSection(const char* meshFile, bool quick)
       }
       // A structural change in a warm window: the next frame builds, compiles
       // and (llvmpipe JIT-compiles shaders at draw time) first runs one variant.
-      auto* material = vtkPhongProperty::SafeDownCast(renderer->GetActors()->GetLastActor()->GetProperty());
+      auto* material =
+        vtkPhongProperty::SafeDownCast(renderer->GetActors()->GetLastActor()->GetProperty());
       material->SetLightingModelToPhong();
       start = Clock::now();
       window->Render();
@@ -230,12 +231,12 @@ void ShaderSection(const char* meshFile, bool quick)
   std::printf("%-34s %12zu %12s\n", "distinct lighting variants", signatures.size(), "-");
   std::printf("%-34s %12d %12s\n", "programs requested (mesh + floor)", compiles, "-");
   std::printf("%-34s %10.1f ms %12s\n", "new variant: GLSL compile and link", 1e3 * buildTime, "-");
-  std::printf("%-34s %10.1f ms %12s\n", "new variant: added frame latency", 1e3 * newVariantFrame,
-    "-");
+  std::printf(
+    "%-34s %10.1f ms %12s\n", "new variant: added frame latency", 1e3 * newVariantFrame, "-");
   std::printf("%-34s %10.1f ms %9.1f ms\n", "first frame (build + draw)", 1e3 * firstFrame[0],
     1e3 * firstFrame[1]);
-  std::printf("%-34s %10.1f ms %9.1f ms\n", "steady frame", 1e3 * steadyFrame[0],
-    1e3 * steadyFrame[1]);
+  std::printf(
+    "%-34s %10.1f ms %9.1f ms\n", "steady frame", 1e3 * steadyFrame[0], 1e3 * steadyFrame[1]);
 }
 
 void FrameSection(bool quick)
@@ -246,8 +247,8 @@ void FrameSection(bool quick)
   auto sphere = Sphere(resolution);
   std::printf("\n== Frame time against the stock mapper (sphere, %lld triangles, %dx%d) ==\n",
     static_cast<long long>(sphere->GetNumberOfPolys()), width, height);
-  std::printf("%-18s %12s %12s %12s %10s\n", "lights", "unlit floor", "stock", "vtkPhong",
-    "ours/stock");
+  std::printf(
+    "%-18s %12s %12s %12s %10s\n", "lights", "unlit floor", "stock", "vtkPhong", "ours/stock");
 
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderWindow> window;
@@ -288,7 +289,8 @@ void FrameSection(bool quick)
   {
     SetLights(renderer, set);
     std::vector<double> times[3];
-    auto show = [&](int which) {
+    auto show = [&](int which)
+    {
       for (int i = 0; i < 3; ++i)
       {
         actors[i]->SetVisibility(i == which);

@@ -39,6 +39,7 @@ int TestPhongDebugViewFinal(int argc, char* argv[])
   }
   vtkPhongTest::Checks checks;
   // Each of the four views rounds once: at most 2 levels apart.
-  checks.Expect(worst <= 2, "terms add up to the final colour (worst " + std::to_string(worst) + ")");
+  checks.Expect(
+    worst <= 2, "terms add up to the final colour (worst " + std::to_string(worst) + ")");
   return vtkPhongTest::Finish(argc, argv, scene.Window, checks.Passed);
 }

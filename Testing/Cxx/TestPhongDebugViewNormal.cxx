@@ -1,4 +1,5 @@
-// Debug view: the shading normal, (N + 1) / 2 in view coordinates, on the scene shared by the debug-view tests.
+// Debug view: the shading normal, (N + 1) / 2 in view coordinates, on the scene shared by the
+// debug-view tests.
 
 #include "vtkPhongTestUtilities.h"
 

@@ -1,4 +1,5 @@
-// Debug view: the whole contribution of light 1 (the green point light) alone, on the scene shared by the debug-view tests.
+// Debug view: the whole contribution of light 1 (the green point light) alone, on the scene shared
+// by the debug-view tests.
 
 #include "vtkPhongTestUtilities.h"
 

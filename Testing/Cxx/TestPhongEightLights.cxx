@@ -27,13 +27,15 @@ int TestPhongEightLights(int argc, char* argv[])
     { { -1, -1, 0.3 }, { 0, 0, 0 }, { 0.2, 0.2, 0.5 }, false, VTK_LIGHT_TYPE_SCENE_LIGHT, 30 },
     { { 0.8, 0.8, 0.6 }, { 0, 0, 0 }, { 1.0, 0.8, 0.2 }, true, VTK_LIGHT_TYPE_SCENE_LIGHT, 180 },
     { { -0.9, 0.5, 0.4 }, { 0, 0, 0 }, { 0.2, 1.0, 0.4 }, true, VTK_LIGHT_TYPE_SCENE_LIGHT, 180 },
-    { { 0.6, -1.0, 1.2 }, { 0.6, -0.6, 0 }, { 1.0, 0.3, 1.0 }, true, VTK_LIGHT_TYPE_SCENE_LIGHT, 20 },
-    { { -0.7, -0.7, 1.4 }, { -0.5, -0.6, 0 }, { 0.3, 0.9, 1.0 }, true, VTK_LIGHT_TYPE_SCENE_LIGHT, 15 },
+    { { 0.6, -1.0, 1.2 }, { 0.6, -0.6, 0 }, { 1.0, 0.3, 1.0 }, true, VTK_LIGHT_TYPE_SCENE_LIGHT,
+      20 },
+    { { -0.7, -0.7, 1.4 }, { -0.5, -0.6, 0 }, { 0.3, 0.9, 1.0 }, true, VTK_LIGHT_TYPE_SCENE_LIGHT,
+      15 },
   };
   for (const auto& spec : specs)
   {
-    vtkLight* light =
-      vtkPhongTest::AddLight(scene, spec.Position, spec.FocalPoint, spec.Color, spec.Positional, spec.Type);
+    vtkLight* light = vtkPhongTest::AddLight(
+      scene, spec.Position, spec.FocalPoint, spec.Color, spec.Positional, spec.Type);
     light->SetConeAngle(spec.Cone);
     if (spec.Positional)
     {
@@ -52,8 +54,8 @@ int TestPhongEightLights(int argc, char* argv[])
   ball->SetColor(0.9, 0.9, 0.9);
   ball->SetSpecular(0.5);
   ball->SetShininess(50.0);
-  auto* mapper =
-    vtkPhongPolyDataMapper::SafeDownCast(vtkPhongTest::AddActor(scene, vtkPhongTest::MakeSphere(96, 0.4), ball)->GetMapper());
+  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(
+    vtkPhongTest::AddActor(scene, vtkPhongTest::MakeSphere(96, 0.4), ball)->GetMapper());
   scene.Renderer->GetActors()->GetLastActor()->SetPosition(0.0, 0.0, 0.4);
 
   scene.LookFromZ(4.5);

@@ -20,7 +20,8 @@ struct TermScene
 
   TermScene()
   {
-    this->Actor = vtkPhongTest::AddActor(this->View, vtkPhongTest::MakePlane(1.0, 4), this->Material);
+    this->Actor =
+      vtkPhongTest::AddActor(this->View, vtkPhongTest::MakePlane(1.0, 4), this->Material);
     this->View.Renderer->AutomaticLightCreationOff();
     vtkCamera* camera = this->View.Renderer->GetActiveCamera();
     camera->ParallelProjectionOn();
@@ -137,7 +138,8 @@ int TestPhongEquationTerms(int, char*[])
     double axis[3], toPoint[3];
     vtkMath::Subtract(aim, above, axis);
     vtkMath::Subtract(shaded, above, toPoint);
-    const double cosPhi = vtkMath::Dot(axis, toPoint) / (vtkMath::Norm(axis) * vtkMath::Norm(toPoint));
+    const double cosPhi =
+      vtkMath::Dot(axis, toPoint) / (vtkMath::Norm(axis) * vtkMath::Norm(toPoint));
     const double spot = std::pow(cosPhi, 10.0);
     ExpectColor(checks, scene.Centre(), { 0.9 * spot, 0.9 * spot, 0.9 * spot }, "spot inside");
     light->SetConeAngle(5.0); // phi = 8.5 degrees: outside the cone

@@ -33,7 +33,8 @@ int TestPhongErrors(int, char*[])
       "negative shininess is clamped to 0 with a warning");
     material->SetShininess(5.0e6);
     checks.Expect(material->GetShininess() == 1.0e6, "shininess is clamped to 1e6");
-    checks.Expect(material->GetSpecularPower() == 128.0, "SpecularPower follows, within VTK's range");
+    checks.Expect(
+      material->GetSpecularPower() == 128.0, "SpecularPower follows, within VTK's range");
     material->SetSpecularPower(64.0);
     checks.Expect(material->GetShininess() == 64.0, "SetSpecularPower sets the shininess");
     material->SetEmission(nan, 0.0, 0.0);
@@ -59,7 +60,8 @@ int TestPhongErrors(int, char*[])
   messages.Observe(mapper);
   scene.LookFromZ(2.5);
 
-  auto renderCentre = [&]() {
+  auto renderCentre = [&]()
+  {
     scene.Window->Render();
     auto image = vtkPhongTest::Snapshot(scene.Window);
     const unsigned char* pixel = vtkPhongTest::PixelAt(image, 32, 32);
@@ -77,19 +79,22 @@ int TestPhongErrors(int, char*[])
 
   light->SetSpecularColor(nan, 0.0, 0.0);
   renderCentre();
-  checks.Expect(messages.Contains("specular colour component nan"), "a NaN light colour is reported");
+  checks.Expect(
+    messages.Contains("specular colour component nan"), "a NaN light colour is reported");
   light->SetSpecularColor(1.0, 1.0, 1.0);
 
   material->SetDiffuseColor(nan, 0.5, 0.5);
   const std::vector<int> pixel = renderCentre();
-  checks.Expect(messages.Contains("diffuse colour component nan"), "a NaN material colour is reported");
+  checks.Expect(
+    messages.Contains("diffuse colour component nan"), "a NaN material colour is reported");
   checks.Expect(pixel[1] > 0, "the render goes on with the colour treated as 0");
   material->SetDiffuseColor(0.5, 0.5, 0.5);
 
   mapper->SetDebugViewToSingleLight();
   mapper->SetDebugLightIndex(5);
   renderCentre();
-  checks.Expect(messages.Contains("DebugLightIndex 5 names no light"), "a bad light index is reported");
+  checks.Expect(
+    messages.Contains("DebugLightIndex 5 names no light"), "a bad light index is reported");
   mapper->SetDebugViewToFinal();
   checks.Expect(vtkPhongTest::NoGLErrors(scene.Window, "bad parameters"), "no GL error");
 
@@ -115,8 +120,8 @@ int TestPhongErrors(int, char*[])
       "the numbered source is printed");
     checks.Expect(log.find("rror") != std::string::npos, "the compiler log is printed");
     checks.Expect(fallback[0] > 0, "the primitive is still drawn (VTK's lighting)");
-    checks.Expect(std::string(mapper->GetLastShaderSignature()).empty(),
-      "the fallback is VTK's own shader");
+    checks.Expect(
+      std::string(mapper->GetLastShaderSignature()).empty(), "the fallback is VTK's own shader");
   }
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -22,7 +22,8 @@ int TestPhongLinesAndPoints(int argc, char* argv[])
   for (int i = 0; i < samples; ++i)
   {
     const double angle = 6.0 * vtkMath::Pi() * i / (samples - 1);
-    points->InsertNextPoint(0.3 * std::cos(angle), -0.5 + i / double(samples - 1), 0.3 * std::sin(angle));
+    points->InsertNextPoint(
+      0.3 * std::cos(angle), -0.5 + i / double(samples - 1), 0.3 * std::sin(angle));
     normals->InsertNextTuple3(std::cos(angle), 0.0, std::sin(angle));
     lines->InsertCellPoint(i);
   }
@@ -31,7 +32,8 @@ int TestPhongLinesAndPoints(int argc, char* argv[])
   helix->SetLines(lines);
   helix->GetPointData()->SetNormals(normals);
 
-  auto material = [](double r, double g, double b) {
+  auto material = [](double r, double g, double b)
+  {
     auto property = vtkSmartPointer<vtkPhongProperty>::New();
     property->SetColor(r, g, b);
     property->SetAmbient(0.2);

@@ -13,7 +13,8 @@ int TestPhongLobeNormalized(int argc, char* argv[])
   const double white[3] = { 1.0, 1.0, 1.0 };
   vtkPhongTest::AddLight(scene, key, origin, white, false);
 
-  const int models[2] = { vtkPhongProperty::NormalizedPhong, vtkPhongProperty::NormalizedBlinnPhong };
+  const int models[2] = { vtkPhongProperty::NormalizedPhong,
+    vtkPhongProperty::NormalizedBlinnPhong };
   const double shininess[3] = { 10.0, 100.0, 1000.0 };
   for (int row = 0; row < 2; ++row)
   {

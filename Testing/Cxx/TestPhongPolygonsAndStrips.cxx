@@ -49,7 +49,8 @@ int TestPhongPolygonsAndStrips(int argc, char* argv[])
   const double white[3] = { 1.0, 1.0, 1.0 };
   vtkPhongTest::AddLight(scene, key, origin, white, false);
 
-  auto material = [](double r, double g, double b) {
+  auto material = [](double r, double g, double b)
+  {
     auto property = vtkSmartPointer<vtkPhongProperty>::New();
     property->SetColor(r, g, b);
     property->SetAmbient(0.15);
@@ -68,8 +69,7 @@ int TestPhongPolygonsAndStrips(int argc, char* argv[])
   quads->RotateX(30.0);
   quads->RotateY(35.0);
 
-  vtkActor* hexagons =
-    vtkPhongTest::AddActor(scene, MakeHexagonalPrism(), material(0.3, 0.8, 0.4));
+  vtkActor* hexagons = vtkPhongTest::AddActor(scene, MakeHexagonalPrism(), material(0.3, 0.8, 0.4));
   hexagons->SetPosition(-0.6, -0.4, 0.0);
   hexagons->RotateX(-50.0);
 

@@ -20,7 +20,8 @@ int TestPhongScalarColors(int argc, char* argv[])
   left->SetSpecular(0.5);
   left->SetShininess(40.0);
   left->SetAmbient(0.1);
-  vtkActor* pointScalars = vtkPhongTest::AddActor(scene, vtkPolyData::SafeDownCast(elevation->GetOutput()), left);
+  vtkActor* pointScalars =
+    vtkPhongTest::AddActor(scene, vtkPolyData::SafeDownCast(elevation->GetOutput()), left);
   pointScalars->SetPosition(-0.55, 0.0, 0.0);
 
   auto banded = vtkPhongTest::MakeSphere(32, 0.45);

@@ -29,14 +29,16 @@ int TestPhongShaderSpecialization(int, char*[])
   vtkActor* actor = vtkPhongTest::AddActor(scene, vtkPhongTest::MakeSphere(32), plain);
   auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
   scene.LookFromZ(2.5);
-  auto render = [&]() {
+  auto render = [&]()
+  {
     scene.Window->Render();
     return std::string(mapper->GetLastFragmentShaderSource());
   };
 
   std::string fs = render();
   checks.Expect(Has(fs, "phongDirectionalLightDiffuse"), "diffuse code for the directional light");
-  checks.Expect(!Has(fs, "phongSpecular") && !Has(fs, "specularLight"), "no specular code at ks = 0");
+  checks.Expect(
+    !Has(fs, "phongSpecular") && !Has(fs, "specularLight"), "no specular code at ks = 0");
   checks.Expect(!Has(fs, "phongDistanceAttenuation"), "no attenuation without positional lights");
   checks.Expect(!Has(fs, "phongPointLight") && !Has(fs, "phongSpotLight"), "no point or spot code");
   checks.Expect(!Has(fs, "phongAmbientLight"), "no ambient code at ka = 0");
@@ -117,8 +119,8 @@ int TestPhongShaderSpecialization(int, char*[])
     plan.Flags.insert(flags.begin(), flags.end());
     for (const auto& section : sections)
     {
-      const std::string code = builder->ResolveTemplate(
-        vtkPhongShaderBuilder::GetTemplate(section[0]), section[1], plan);
+      const std::string code =
+        builder->ResolveTemplate(vtkPhongShaderBuilder::GetTemplate(section[0]), section[1], plan);
       checks.Expect(!Has(code, "//PHONG_") && !Has(code, "@"),
         std::string(section[0]) + " " + section[1] + ": directives resolved");
     }

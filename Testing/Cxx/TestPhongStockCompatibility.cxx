@@ -27,7 +27,8 @@ vtkSmartPointer<vtkImageData> RenderWith(
   return vtkPhongTest::Snapshot(scene.Window);
 }
 
-void AddDirectional(vtkRenderer* renderer, double x, double y, double z, double r, double g, double b)
+void AddDirectional(
+  vtkRenderer* renderer, double x, double y, double z, double r, double g, double b)
 {
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();
@@ -43,7 +44,8 @@ int TestPhongStockCompatibility(int argc, char* argv[])
   const std::pair<const char*, std::function<void(vtkRenderer*, vtkProperty*)>> scenes[] = {
     { "VTK defaults, headlight", [](vtkRenderer*, vtkProperty*) {} },
     { "two directional scene lights with specular",
-      [](vtkRenderer* renderer, vtkProperty* property) {
+      [](vtkRenderer* renderer, vtkProperty* property)
+      {
         property->SetColor(0.9, 0.4, 0.2);
         property->SetAmbient(0.1);
         property->SetSpecular(0.5);
@@ -52,7 +54,8 @@ int TestPhongStockCompatibility(int argc, char* argv[])
         AddDirectional(renderer, -1, 0.5, 0.3, 0.3, 0.5, 1.0);
       } },
     { "point, spot and camera lights with specular",
-      [](vtkRenderer* renderer, vtkProperty* property) {
+      [](vtkRenderer* renderer, vtkProperty* property)
+      {
         property->SetColor(0.9, 0.4, 0.2);
         property->SetAmbient(0.1);
         property->SetSpecular(0.5);

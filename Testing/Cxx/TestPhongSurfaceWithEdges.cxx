@@ -16,9 +16,10 @@ int TestPhongSurfaceWithEdges(int argc, char* argv[])
   scene.Window->Render();
 
   vtkPhongTest::Checks checks;
-  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(
-    scene.Renderer->GetActors()->GetLastActor()->GetMapper());
-  checks.Expect(std::string(mapper->GetLastGeometryShaderSource()).find("phongDiffuseLightGSOutput") !=
+  auto* mapper =
+    vtkPhongPolyDataMapper::SafeDownCast(scene.Renderer->GetActors()->GetLastActor()->GetMapper());
+  checks.Expect(
+    std::string(mapper->GetLastGeometryShaderSource()).find("phongDiffuseLightGSOutput") !=
       std::string::npos,
     "the geometry shader passes the per-vertex light on");
   return vtkPhongTest::Finish(argc, argv, scene.Window, checks.Passed);

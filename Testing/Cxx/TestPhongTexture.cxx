@@ -26,7 +26,8 @@ int TestPhongTexture(int argc, char* argv[])
   material->SetDiffuse(0.9);
   material->SetSpecular(0.9);
   material->SetShininess(30.0);
-  vtkActor* actor = vtkPhongTest::AddActor(scene, vtkPolyData::SafeDownCast(mapToPlane->GetOutput()), material);
+  vtkActor* actor =
+    vtkPhongTest::AddActor(scene, vtkPolyData::SafeDownCast(mapToPlane->GetOutput()), material);
   scene.LookFromZ(3.5);
 
   // An all-black texture: what remains is the specular highlight alone.

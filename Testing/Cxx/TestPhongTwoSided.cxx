@@ -14,6 +14,7 @@ int TestPhongTwoSided(int argc, char* argv[])
   vtkPhongTest::Checks checks;
   auto image = vtkPhongTest::Snapshot(scene.Window);
   const unsigned char* inside = vtkPhongTest::PixelAt(image, 150, 140);
-  checks.Expect(inside[2] > inside[0] && inside[2] > 100, "the inside is lit with the back material");
+  checks.Expect(
+    inside[2] > inside[0] && inside[2] > 100, "the inside is lit with the back material");
   return vtkPhongTest::Finish(argc, argv, scene.Window, checks.Passed);
 }

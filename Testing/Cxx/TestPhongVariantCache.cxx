@@ -28,7 +28,8 @@ int TestPhongVariantCache(int, char*[])
   vtkPhongTest::Checks checks;
   checks.Expect(mapper->GetShaderCompileCount() == 1, "the first frame builds one shader");
 
-  auto centreRed = [&]() {
+  auto centreRed = [&]()
+  {
     scene.Window->Render();
     return int(vtkPhongTest::PixelAt(vtkPhongTest::Snapshot(scene.Window), 32, 32)[0]);
   };
@@ -51,8 +52,8 @@ int TestPhongVariantCache(int, char*[])
     change.second();
     const int after = centreRed();
     checks.Expect(after != before, std::string(change.first) + " changes the picture");
-    checks.Expect(mapper->GetShaderCompileCount() == compiles,
-      std::string(change.first) + " builds no shader");
+    checks.Expect(
+      mapper->GetShaderCompileCount() == compiles, std::string(change.first) + " builds no shader");
     before = after;
   }
   const int compiles = mapper->GetShaderCompileCount();
@@ -64,7 +65,9 @@ int TestPhongVariantCache(int, char*[])
   const std::pair<const char*, std::function<void()>> structureChanges[] = {
     { "specular off", [&] { material->SetSpecular(0.0); } },
     { "specular on again", [&] { material->SetSpecular(0.5); } },
-    { "a point light", [&] {
+    { "a point light",
+      [&]
+      {
         vtkLight* point = vtkPhongTest::AddLight(scene, key, origin, white, true);
         point->SetConeAngle(180.0);
       } },

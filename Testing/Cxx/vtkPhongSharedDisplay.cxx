@@ -9,7 +9,8 @@
 
 void* vtkPhongTest::SharedDisplay()
 {
-  static Display* display = [] {
+  static Display* display = []
+  {
     for (int attempt = 0; attempt < 50; ++attempt)
     {
       if (Display* opened = XOpenDisplay(nullptr))

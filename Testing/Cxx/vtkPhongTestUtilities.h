@@ -10,18 +10,17 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkImageMathematics.h"
 #include "vtkImageShiftScale.h"
-#include "vtkPNGReader.h"
-#include "vtkPNGWriter.h"
-#include "vtkTesting.h"
-#include "vtkCommand.h"
-#include "vtkFloatArray.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPNGReader.h"
+#include "vtkPNGWriter.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
 #include "vtkPhongSharedDisplay.h"
@@ -34,6 +33,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkTesting.h"
 #include "vtkTexture.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
@@ -250,8 +250,7 @@ inline bool NoGLErrors(vtkRenderWindow* window, const char* where)
   bool clean = true;
   for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError())
   {
-    std::cerr << "OpenGL error 0x" << std::hex << error << std::dec << " after " << where
-              << "\n";
+    std::cerr << "OpenGL error 0x" << std::hex << error << std::dec << " after " << where << "\n";
     clean = false;
   }
   return clean;
@@ -364,8 +363,8 @@ struct Checks
   void Near(double value, double expected, double tolerance, const std::string& what)
   {
     this->Expect(std::abs(value - expected) <= tolerance,
-      what + ": got " + std::to_string(value) + ", expected " + std::to_string(expected) +
-        " +- " + std::to_string(tolerance));
+      what + ": got " + std::to_string(value) + ", expected " + std::to_string(expected) + " +- " +
+        std::to_string(tolerance));
   }
 };
 
@@ -404,8 +403,8 @@ inline bool StrictlyMatchesBaseline(int argc, char* argv[], vtkRenderWindow* win
   baseline->GetDimensions(baselineDims);
   if (dims[0] != baselineDims[0] || dims[1] != baselineDims[1])
   {
-    std::cerr << "Strict check: the image is " << dims[0] << "x" << dims[1]
-              << ", the baseline " << baselineDims[0] << "x" << baselineDims[1] << "\n";
+    std::cerr << "Strict check: the image is " << dims[0] << "x" << dims[1] << ", the baseline "
+              << baselineDims[0] << "x" << baselineDims[1] << "\n";
     return false;
   }
   const int changed = CountDifferentPixels(rendered, baseline, StrictLevels);
@@ -413,8 +412,8 @@ inline bool StrictlyMatchesBaseline(int argc, char* argv[], vtkRenderWindow* win
   {
     return true;
   }
-  std::cerr << "Strict check: " << changed << " pixels differ from " << baselineFile << " by more than "
-            << StrictLevels << " levels (budget " << StrictPixelBudget << ")\n";
+  std::cerr << "Strict check: " << changed << " pixels differ from " << baselineFile
+            << " by more than " << StrictLevels << " levels (budget " << StrictPixelBudget << ")\n";
   // Leave the picture and the per-pixel difference where VTK puts its own.
   const char* temporary = testing->GetTempDirectory();
   std::string name = vtksys::SystemTools::GetFilenameWithoutLastExtension(baselineFile);
@@ -448,7 +447,7 @@ inline int Finish(int argc, char* argv[], vtkRenderWindow* window, bool otherChe
   const int result = vtkRegressionTestImage(window);
   const bool strict = result == vtkTesting::FAILED || StrictlyMatchesBaseline(argc, argv, window);
   return (result != vtkTesting::FAILED && strict && glClean && otherChecksPassed) ? EXIT_SUCCESS
-                                                                                   : EXIT_FAILURE;
+                                                                                  : EXIT_FAILURE;
 }
 
 } // namespace vtkPhongTest

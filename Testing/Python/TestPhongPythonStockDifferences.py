@@ -122,6 +122,14 @@ SCENES = [
 ]
 
 
+# One window for every scene: Xvfb in this project's sandboxes refuses some
+# connections made right after another closed (see vtkPhongSharedDisplay.h).
+WINDOW = vtkRenderWindow()
+WINDOW.SetOffScreenRendering(True)
+WINDOW.SetMultiSamples(0)
+WINDOW.SetSize(200, 200)
+
+
 def render(mapper_class, scene, shell):
     source = vtkSphereSource()
     source.SetThetaResolution(64)
@@ -139,10 +147,10 @@ def render(mapper_class, scene, shell):
     actor.SetMapper(mapper)
     renderer = vtkRenderer()
     renderer.AddActor(actor)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(True)
-    window.SetMultiSamples(0)
-    window.SetSize(200, 200)
+    window = WINDOW
+    previous = window.GetRenderers().GetFirstRenderer()
+    if previous is not None:
+        window.RemoveRenderer(previous)
     window.AddRenderer(renderer)
     scene(actor, renderer)
     camera = renderer.GetActiveCamera()
