@@ -298,4 +298,20 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";
   os << indent << "LastShaderBuildTime: " << this->LastShaderBuildTime << "\n";
   os << indent << "LastShaderSignature: " << this->LastSignature << "\n";
+  os << indent << "LastVertexShaderSource: " << this->LastVertexSource.size() << " characters\n";
+  os << indent << "LastFragmentShaderSource: " << this->LastFragmentSource.size()
+     << " characters\n";
+  os << indent << "LastGeometryShaderSource: " << this->LastGeometrySource.size()
+     << " characters\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
+{
+  if (auto* phong = vtkPhongPolyDataMapper::SafeDownCast(mapper))
+  {
+    this->SetDebugView(phong->GetDebugView());
+    this->SetDebugLightIndex(phong->GetDebugLightIndex());
+  }
+  this->Superclass::ShallowCopy(mapper);
 }

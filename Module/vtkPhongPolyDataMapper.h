@@ -121,6 +121,11 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
+  /**
+   * Copy the settings of another mapper, the debug view included.
+   */
+  void ShallowCopy(vtkAbstractMapper* mapper) override;
+
 protected:
   vtkPhongPolyDataMapper();
   ~vtkPhongPolyDataMapper() override;

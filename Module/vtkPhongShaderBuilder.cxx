@@ -11,6 +11,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -32,6 +33,7 @@ vtkStandardNewMacro(vtkPhongShaderBuilder);
 namespace
 {
 using RGB = std::array<float, 3>;
+using View = vtkPhongPolyDataMapper; // for its DebugViews values
 
 const char* LightKindName(vtkLight* light)
 {
@@ -144,7 +146,7 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   {
     return plan;
   }
-  if (litWithoutLights && options.DebugView == ShadingNormal)
+  if (litWithoutLights && options.DebugView == View::ShadingNormal)
   {
     return plan; // VTK provides no normal to an unlit primitive
   }
@@ -166,7 +168,7 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
       plan.PointLights.push_back(switchedOnLight);
     }
   }
-  if (options.DebugView == SingleLight)
+  if (options.DebugView == View::SingleLight)
   {
     if (options.DebugLightIndex >= 0 &&
       options.DebugLightIndex < static_cast<int>(switchedOn.size()))
@@ -190,10 +192,13 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   plan.BackMaterial = back;
 
   const int view = options.DebugView;
-  const bool wantAmbient = view == Final || view == AmbientTerm || view == SingleLight;
-  const bool wantDiffuse = view == Final || view == DiffuseTerm || view == SingleLight;
-  const bool wantSpecular = view == Final || view == SpecularTerm || view == SingleLight;
-  const bool wantEmission = view == Final || view == EmissionTerm;
+  const bool wantAmbient =
+    view == View::Final || view == View::AmbientTerm || view == View::SingleLight;
+  const bool wantDiffuse =
+    view == View::Final || view == View::DiffuseTerm || view == View::SingleLight;
+  const bool wantSpecular =
+    view == View::Final || view == View::SpecularTerm || view == View::SingleLight;
+  const bool wantEmission = view == View::Final || view == View::EmissionTerm;
   const bool haveLights = !switchedOn.empty();
 
   auto& flags = plan.Flags;
@@ -245,16 +250,16 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
 
   const bool perVertex = lightSums && phongFront && phongFront->GetPerVertexGouraud() &&
     front->GetInterpolation() == VTK_GOURAUD && state.HasPointNormals && !state.NormalsFromShape &&
-    view != ShadingNormal;
+    view != View::ShadingNormal;
   set("PER_VERTEX", perVertex);
   set("SUMS_PER_VERTEX", lightSums && perVertex);
   set("SUMS_PER_FRAGMENT", lightSums && !perVertex);
   set("GEOMETRY_PASS_THROUGH", perVertex && state.HasGeometryShader);
   set("TWO_SIDED", twoSided);
   set("BACK_MATERIAL", back != front);
-  set("DEBUG_NORMAL", view == ShadingNormal);
+  set("DEBUG_NORMAL", view == View::ShadingNormal);
 
-  const bool shadingNormal = (lightSums && !perVertex) || view == ShadingNormal;
+  const bool shadingNormal = (lightSums && !perVertex) || view == View::ShadingNormal;
   set("SHADING_NORMAL", shadingNormal);
   set("ONE_SIDED", shadingNormal && !twoSided);
   // Zero, NaN or infinite normals in the data take the face's geometric normal
@@ -519,7 +524,7 @@ void SetVec3Array(vtkShaderProgram* program, const char* name, const std::vector
 void vtkPhongShaderBuilder::SetLightUniforms(
   vtkShaderProgram* program, vtkRenderer* ren, const Plan& plan)
 {
-  const bool singleLight = plan.DebugView == SingleLight;
+  const bool singleLight = plan.DebugView == View::SingleLight;
 
   // A light's colours times its intensity, zero for lights hidden by the
   // single-light view; non-finite or negative values are reported and zeroed.

@@ -50,21 +50,6 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * The debug views: the final colour, one term of the equation alone, the shading normal
-   * (mapped from [-1, 1] to [0, 1]), or the whole contribution of one light.
-   */
-  enum DebugViews
-  {
-    Final = 0,
-    AmbientTerm = 1,
-    DiffuseTerm = 2,
-    SpecularTerm = 3,
-    EmissionTerm = 4,
-    ShadingNormal = 5,
-    SingleLight = 6
-  };
-
-  /**
    * What the calling mapper knows about the primitive it is about to draw and the builder
    * cannot see: VTK keeps these in the mapper's protected state.
    */
@@ -86,7 +71,7 @@ public:
    */
   struct Options
   {
-    int DebugView = Final;
+    int DebugView = 0; ///< a vtkPhongPolyDataMapper::DebugViews value
     int DebugLightIndex = 0;
   };
 
@@ -104,7 +89,7 @@ public:
     vtkLight* DebugLight = nullptr; ///< the light shown by the SingleLight view
     vtkProperty* FrontMaterial = nullptr;
     vtkProperty* BackMaterial = nullptr; ///< the front material when there is no back one
-    int DebugView = Final;
+    int DebugView = 0;                   ///< a vtkPhongPolyDataMapper::DebugViews value
     bool Has(const char* flag) const { return this->Flags.count(flag) != 0; }
   };
 

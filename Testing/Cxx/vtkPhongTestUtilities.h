@@ -180,6 +180,29 @@ inline void BuildInterpolationScene(Scene& scene, vtkPhongProperty* material)
   scene.LookFromZ(2.3);
 }
 
+// A spot light (cone 25 degrees, exponent 4) on a floor, with a dim blue
+// renderer ambient; returns the floor's material for the option under test.
+inline vtkPhongProperty* BuildSpotScene(Scene& scene)
+{
+  scene.Renderer->AutomaticLightCreationOff();
+  const double source[3] = { -0.6, 0.3, 1.6 };
+  const double target[3] = { 0.1, -0.1, 0.0 };
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  vtkLight* spot = AddLight(scene, source, target, white, true);
+  spot->SetConeAngle(25.0);
+  spot->SetExponent(4.0);
+
+  auto floor = vtkSmartPointer<vtkPhongProperty>::New();
+  floor->SetColor(0.9, 0.9, 0.9);
+  floor->SetAmbient(0.1);
+  floor->SetSpecular(0.3);
+  floor->SetShininess(40.0);
+  AddActor(scene, MakePlane(1.5, 60), floor);
+  scene.Renderer->SetAmbient(0.2, 0.2, 0.3);
+  scene.LookFromZ(4.0);
+  return floor; // the actor keeps it alive
+}
+
 // The scene of the debug-view tests: a sphere on a floor under a directional,
 // a point and a spot light, with an emissive material.
 inline vtkPhongPolyDataMapper* BuildDebugScene(Scene& scene)
