@@ -1156,6 +1156,22 @@ bool vtkOpenMeshNormals::Internals::Build(
   if (std::find(orientation.begin(), orientation.end(), -1) != orientation.end())
   {
     this->Reverse(orientation, twins, sameDirection);
+    // A reversed face's point p_j moved from corner j to corner (n - j) mod n.
+    const FaceList& faces = this->Faces;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(around.Corners.size()),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          Index& corner = around.Corners[i];
+          const Index f = this->CornerFace[corner];
+          if (orientation[f] < 0)
+          {
+            const Index first = faces.Offsets[f], n = faces.Offsets[f + 1] - first;
+            corner = first + (n - (corner - first)) % n;
+          }
+        }
+      });
   }
   self->UpdateProgress(0.4);
 

@@ -10,6 +10,7 @@
 #include "vtkPhongShaderBuilder.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
 
@@ -23,6 +24,9 @@ vtkStandardNewMacro(vtkPhongPolyDataMapper);
 struct vtkPhongPolyDataMapper::Internals
 {
   vtkNew<vtkPhongShaderBuilder> Builder;
+  vtkNew<vtkOpenMeshNormals> Normals;
+  // The mapper named vtkOriginalPointIds for picking itself (and may unname it).
+  bool NamedPointIds = false;
   // The plan of each primitive (points, lines, polygons, strips), made afresh
   // every frame by GetNeedToRebuildShaders and used until the next one.
   std::map<const vtkOpenGLHelper*, vtkPhongShaderBuilder::Plan> Plans;
@@ -263,6 +267,49 @@ void vtkPhongPolyDataMapper::SetPropertyShaderParameters(
 }
 
 //------------------------------------------------------------------------------
+vtkOpenMeshNormals* vtkPhongPolyDataMapper::GetNormalsGenerator()
+{
+  return this->Internal->Normals;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+{
+  // Input without normals, shaded smoothly: draw the normals filter's output
+  // instead. The filter re-executes only when its input or settings change.
+  vtkPolyData* input = this->CurrentInput;
+  this->UsedGeneratedNormals = this->ComputeMissingNormals && input &&
+    (input->GetNumberOfPolys() > 0 || input->GetNumberOfStrips() > 0) &&
+    !input->GetPointData()->GetNormals() && !input->GetCellData()->GetNormals() &&
+    act->GetProperty()->GetInterpolation() != VTK_FLAT;
+  if (this->UsedGeneratedNormals)
+  {
+    vtkOpenMeshNormals* normals = this->Internal->Normals;
+    if (normals->GetInput() != input)
+    {
+      normals->SetInputData(input);
+    }
+    normals->SetWeighting(this->NormalsWeighting);
+    normals->SetFeatureAngle(this->NormalsFeatureAngle);
+    normals->SetSplitting(this->NormalsSplitting);
+    normals->Update();
+    this->CurrentInput = normals->GetOutput();
+    // Split points get new ids; picking should still report the input's.
+    if (this->NormalsSplitting && !this->PointIdArrayName)
+    {
+      this->SetPointIdArrayName(normals->GetOriginalPointIdsArrayName());
+      this->Internal->NamedPointIds = true;
+    }
+  }
+  else if (this->Internal->NamedPointIds)
+  {
+    this->SetPointIdArrayName(nullptr);
+    this->Internal->NamedPointIds = false;
+  }
+  this->Superclass::RenderPieceStart(ren, act);
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::RenderPieceFinish(ren, act);
@@ -294,6 +341,11 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DebugView: " << this->GetDebugViewAsString() << "\n";
   os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
+  os << indent << "ComputeMissingNormals: " << (this->ComputeMissingNormals ? "On" : "Off") << "\n";
+  os << indent << "NormalsWeighting: " << this->NormalsWeighting << "\n";
+  os << indent << "NormalsFeatureAngle: " << this->NormalsFeatureAngle << "\n";
+  os << indent << "NormalsSplitting: " << (this->NormalsSplitting ? "On" : "Off") << "\n";
+  os << indent << "UsedGeneratedNormals: " << (this->UsedGeneratedNormals ? "yes" : "no") << "\n";
   os << indent << "ShaderCompileCount: " << this->ShaderCompileCount << "\n";
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";
   os << indent << "LastShaderBuildTime: " << this->LastShaderBuildTime << "\n";
@@ -312,6 +364,10 @@ void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
   {
     this->SetDebugView(phong->GetDebugView());
     this->SetDebugLightIndex(phong->GetDebugLightIndex());
+    this->SetComputeMissingNormals(phong->GetComputeMissingNormals());
+    this->SetNormalsWeighting(phong->GetNormalsWeighting());
+    this->SetNormalsFeatureAngle(phong->GetNormalsFeatureAngle());
+    this->SetNormalsSplitting(phong->GetNormalsSplitting());
   }
   this->Superclass::ShallowCopy(mapper);
 }

@@ -35,6 +35,7 @@
 #define vtkPhongPolyDataMapper_h
 
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenMeshNormals.h"      // for the weighting values
 #include "vtkRenderingPhongModule.h" // for export macro
 
 #include <map>    // for std::map
@@ -94,6 +95,42 @@ public:
 
   ///@{
   /**
+   * Normals for input without them. When the input has neither point nor cell normals, has
+   * polygons or strips, and the actor's interpolation is not Flat, the mapper computes point
+   * normals with vtkOpenMeshNormals (stock VTK shades such input with faceted screen-space
+   * normals). The result is cached: it is recomputed only when the input or these settings
+   * change, and when only the points move the filter reuses its topology. With splitting,
+   * points along sharp edges are duplicated; point picking still reports input point ids
+   * (the mapper uses the vtkOriginalPointIds array unless a PointIdArrayName is set).
+   * ComputeMissingNormals: default on. NormalsWeighting: default vtkOpenMeshNormals::Max, one
+   * of Uniform, Area, Angle, Max. NormalsFeatureAngle: default 30 degrees, range [0, 180].
+   * NormalsSplitting: default on.
+   */
+  vtkSetMacro(ComputeMissingNormals, bool);
+  vtkGetMacro(ComputeMissingNormals, bool);
+  vtkBooleanMacro(ComputeMissingNormals, bool);
+  vtkSetClampMacro(NormalsWeighting, int, vtkOpenMeshNormals::Uniform, vtkOpenMeshNormals::Max);
+  vtkGetMacro(NormalsWeighting, int);
+  void SetNormalsWeightingToUniform() { this->SetNormalsWeighting(vtkOpenMeshNormals::Uniform); }
+  void SetNormalsWeightingToArea() { this->SetNormalsWeighting(vtkOpenMeshNormals::Area); }
+  void SetNormalsWeightingToAngle() { this->SetNormalsWeighting(vtkOpenMeshNormals::Angle); }
+  void SetNormalsWeightingToMax() { this->SetNormalsWeighting(vtkOpenMeshNormals::Max); }
+  vtkSetClampMacro(NormalsFeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(NormalsFeatureAngle, double);
+  vtkSetMacro(NormalsSplitting, bool);
+  vtkGetMacro(NormalsSplitting, bool);
+  vtkBooleanMacro(NormalsSplitting, bool);
+  ///@}
+
+  /**
+   * The filter that computes missing normals (its counts describe the last computation), and
+   * whether the last render used its output.
+   */
+  vtkOpenMeshNormals* GetNormalsGenerator();
+  vtkGetMacro(UsedGeneratedNormals, bool);
+
+  ///@{
+  /**
    * Shader statistics since the mapper was created (or last released its graphics resources).
    * ShaderCompileCount: how many times the mapper asked the render window for a program
    * whose source it had not used before; each costs a compile and link unless another mapper
@@ -140,10 +177,16 @@ protected:
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetPropertyShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
 
   int DebugView = Final;
   int DebugLightIndex = 0;
+  bool ComputeMissingNormals = true;
+  int NormalsWeighting = vtkOpenMeshNormals::Max;
+  double NormalsFeatureAngle = 30.0;
+  bool NormalsSplitting = true;
+  bool UsedGeneratedNormals = false;
 
   int ShaderCompileCount = 0;
   double LastShaderBuildTime = 0.0;

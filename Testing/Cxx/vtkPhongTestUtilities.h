@@ -370,6 +370,24 @@ inline int CountDifferentPixels(vtkImageData* a, vtkImageData* b, int threshold)
   return count;
 }
 
+// Whether two arrays hold exactly the same values.
+inline bool ArraysEqual(vtkDataArray* a, vtkDataArray* b)
+{
+  if (!a || !b || a->GetNumberOfTuples() != b->GetNumberOfTuples() ||
+    a->GetNumberOfComponents() != b->GetNumberOfComponents())
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  {
+    if (a->GetVariantValue(i) != b->GetVariantValue(i))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // Reports a failed expectation and remembers it.
 struct Checks
 {
