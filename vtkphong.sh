@@ -82,6 +82,8 @@ case "$command" in
     build_project
     extract_meshes data/meshes/bunny00.off
     with_display "$build/bin/vtkPhongBenchmark" "$build/data/meshes/bunny00.off"
+    extract_meshes data/meshes/refined_elephant.off
+    "$build/bin/vtkOpenMeshNormalsBenchmark" "$build/data/meshes/refined_elephant.off"
     ;;
   *)
     sed -n '2,11p' "$0" >&2

@@ -188,7 +188,7 @@ struct vtkOpenMeshNormals::Internals
   // Per-update scratch, kept so that repeated updates reuse the memory.
   std::vector<Vector> FaceNormal;
   std::vector<char> FaceValid;
-  std::vector<double> CornerWeight;
+  std::vector<float> CornerWeight;
   std::vector<signed char> FaceSign;
   std::vector<Vector> UnitNormal;
   std::vector<char> Cuts;
@@ -408,19 +408,33 @@ std::vector<Index> vtkOpenMeshNormals::Internals::FindTwins(
   const Index numberOfCorners = static_cast<Index>(faces.Points.size());
   // Each corner's next and previous points side by side: the search below
   // reads one small record per candidate instead of following three arrays.
-  std::vector<Index> neighbours(2 * static_cast<size_t>(numberOfCorners));
-  vtkSMPTools::For(0, faces.Size(),
-    [&](Index begin, Index end)
-    {
-      for (Index f = begin; f < end; ++f)
+  // Triangles find them by arithmetic and skip the copy.
+  std::vector<Index> neighbours(faces.AllTriangles ? 0 : 2 * static_cast<size_t>(numberOfCorners));
+  if (!faces.AllTriangles)
+  {
+    vtkSMPTools::For(0, faces.Size(),
+      [&](Index begin, Index end)
       {
-        for (Index c = faces.Offsets[f]; c < faces.Offsets[f + 1]; ++c)
+        for (Index f = begin; f < end; ++f)
         {
-          neighbours[2 * static_cast<size_t>(c)] = faces.Points[faces.Next(c, f)];
-          neighbours[2 * static_cast<size_t>(c) + 1] = faces.Points[faces.Previous(c, f)];
+          for (Index c = faces.Offsets[f]; c < faces.Offsets[f + 1]; ++c)
+          {
+            neighbours[2 * static_cast<size_t>(c)] = faces.Points[faces.Next(c, f)];
+            neighbours[2 * static_cast<size_t>(c) + 1] = faces.Points[faces.Previous(c, f)];
+          }
         }
-      }
-    });
+      });
+  }
+  auto nextPoint = [&](Index c)
+  {
+    return faces.AllTriangles ? faces.Points[faces.Next(c, 0)]
+                              : neighbours[2 * static_cast<size_t>(c)];
+  };
+  auto previousPoint = [&](Index c)
+  {
+    return faces.AllTriangles ? faces.Points[faces.Previous(c, 0)]
+                              : neighbours[2 * static_cast<size_t>(c) + 1];
+  };
   std::vector<Index> twins(numberOfCorners, NoTwin);
   sameDirection.assign(numberOfCorners, 0);
   vtkSMPTools::For(0, faces.Size(),
@@ -431,7 +445,7 @@ std::vector<Index> vtkOpenMeshNormals::Internals::FindTwins(
         const Index first = faces.Offsets[f], last = faces.Offsets[f + 1];
         for (Index c = first; c < last; ++c)
         {
-          const Index a = faces.Points[c], b = neighbours[2 * static_cast<size_t>(c)];
+          const Index a = faces.Points[c], b = nextPoint(c);
           Index found = NoTwin;
           char same = 0;
           for (Index i = around.Offsets[a]; i < around.Offsets[a + 1] && found != NonManifoldEdge;
@@ -443,12 +457,12 @@ std::vector<Index> vtkOpenMeshNormals::Internals::FindTwins(
               continue;
             }
             Index twin = NoTwin;
-            if (neighbours[2 * static_cast<size_t>(d)] == b)
+            if (nextPoint(d) == b)
             {
               twin = d; // g also runs a -> b
               same = 1;
             }
-            else if (neighbours[2 * static_cast<size_t>(d) + 1] == b)
+            else if (previousPoint(d) == b)
             {
               twin = faces.Previous(d, this->CornerFace[d]); // g runs b -> a
               same = 0;
@@ -827,8 +841,10 @@ bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around,
     }
     return (twin >= 0 && !irregular[this->CornerFace[twin]]) ? twin : NoTwin;
   };
-  // Edge ids: owners counted per face in parallel, numbered in face order.
-  std::vector<Index> edgeOfCorner(numberOfCorners, -1);
+  // Halfedge ids: a corner owning its edge takes halfedge 2e (its own
+  // direction), its twin 2e + 1. Owners are counted per face in parallel and
+  // numbered in face order.
+  std::vector<Index> halfedgeOfCorner(numberOfCorners, -1);
   std::vector<Index> firstEdge(numberOfFaces + 1, 0);
   auto owns = [&](Index c)
   {
@@ -870,24 +886,20 @@ bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around,
         {
           if (owns(c))
           {
-            edgeOfCorner[c] = edge++;
+            halfedgeOfCorner[c] = 2 * edge++;
           }
         }
       }
     });
-  // The owner takes halfedge 2e (its own direction), its twin 2e + 1.
-  std::vector<Index> halfedgeOfCorner(numberOfCorners, -1);
   vtkSMPTools::For(0, numberOfCorners,
     [&](Index begin, Index end)
     {
       for (Index c = begin; c < end; ++c)
       {
-        if (irregular[this->CornerFace[c]])
+        if (halfedgeOfCorner[c] < 0 && !irregular[this->CornerFace[c]])
         {
-          continue;
+          halfedgeOfCorner[c] = halfedgeOfCorner[regularTwin(c)] + 1;
         }
-        halfedgeOfCorner[c] =
-          edgeOfCorner[c] >= 0 ? 2 * edgeOfCorner[c] : 2 * edgeOfCorner[regularTwin(c)] + 1;
       }
     });
   mesh.resize(numberOfVertices, numberOfEdges, numberOfRegularFaces);
@@ -1327,7 +1339,7 @@ int vtkOpenMeshNormals::RequestData(
   // Max |N| / (|e1|^2 |e2|^2). Polygons take the general path below.
   const int weighting = this->Weighting;
   const bool triangles = faces.AllTriangles;
-  std::vector<double>& cornerWeight = topology.CornerWeight;
+  std::vector<float>& cornerWeight = topology.CornerWeight;
   cornerWeight.resize(triangles ? numberOfCorners : 0);
   vtkSMPTools::For(0, numberOfFaces,
     [&](vtkIdType begin, vtkIdType end)
@@ -1385,7 +1397,7 @@ int vtkOpenMeshNormals::RequestData(
               weight = 0.0;
             }
           }
-          cornerWeight[first + k] = weight;
+          cornerWeight[first + k] = static_cast<float>(weight);
         }
       }
     });
