@@ -8,7 +8,8 @@ from vtkphong_testing import Checks
 
 checks = Checks()
 
-for name in ("vtkPhongPolyDataMapper", "vtkPhongProperty", "vtkPhongOFFReader"):
+for name in ("vtkPhongPolyDataMapper", "vtkPhongProperty", "vtkPhongOFFReader",
+             "vtkOpenMeshNormals"):
     cls = getattr(vtkphong, name, None)
     checks.expect(cls is not None, "vtkphong exposes " + name)
     checks.expect(cls is not None and bool(cls.__doc__), name + " has a docstring")
@@ -53,6 +54,19 @@ mapper.SetDebugLightIndex(3)
 checks.expect(mapper.GetDebugLightIndex() == 3, "debug light index")
 checks.expect(mapper.GetShaderCompileCount() == 0 and mapper.GetNumberOfShaderVariants() == 0,
               "no shader before the first render")
+normals = vtkphong.vtkOpenMeshNormals()
+for method in ("SetFeatureAngle", "SetSplitting", "SetConsistency", "SetAutoOrientNormals",
+               "SetComputePointNormals", "SetComputeCellNormals", "SetFlipNormals",
+               "SetNonManifoldTraversal", "SetWeightingToUniform", "SetWeightingToArea",
+               "SetWeightingToAngle", "SetWeightingToMax"):
+    checks.expect(hasattr(normals, method), "vtkOpenMeshNormals." + method)
+checks.expect(normals.GetWeightingAsString() == "Max", "Max is the default weighting")
+checks.expect(normals.GetFeatureAngle() == 30.0 and normals.GetSplitting(), "VTK's defaults")
+mapper.SetNormalsWeightingToAngle()
+checks.expect(mapper.GetNormalsWeighting() == vtkphong.vtkOpenMeshNormals.Angle,
+              "the mapper's normals weighting")
+checks.expect(mapper.GetNormalsGenerator().IsA("vtkOpenMeshNormals"), "the mapper's generator")
+
 copy = vtkphong.vtkPhongPolyDataMapper()
 copy.ShallowCopy(mapper)
 checks.expect(copy.GetDebugLightIndex() == 3, "ShallowCopy copies the debug settings")
