@@ -24,6 +24,8 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkOpenMeshNormals);
@@ -44,6 +46,38 @@ using FaceHandle = HalfedgeMesh::FaceHandle;
 // Indices of points, faces, corners and halfedges: OpenMesh's handles are
 // 32-bit, so is everything the filter keeps.
 using Index = int;
+
+// Growing a vector with this allocator leaves plain values uninitialized. The
+// filter's large arrays are written by parallel loops right after they are
+// sized; value-initializing them first would touch (page-fault) all their
+// memory serially on one thread, which for a million triangles costs more
+// than the computation.
+template <typename T>
+struct UninitializedAllocator : std::allocator<T>
+{
+  template <typename U>
+  struct rebind
+  {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <typename U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept
+  {
+  }
+  template <typename U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
+  {
+    ::new (static_cast<void*>(p)) U; // default-, not value-initialized
+  }
+  template <typename U, typename... Arguments>
+  void construct(U* p, Arguments&&... arguments)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Arguments>(arguments)...);
+  }
+};
+template <typename T>
+using Buffer = std::vector<T, UninitializedAllocator<T>>;
 
 using Vector = std::array<double, 3>;
 
@@ -80,8 +114,8 @@ constexpr Index NonManifoldEdge = -2;
 // Offsets[f + 1]), each holding an input point id.
 struct FaceList
 {
-  std::vector<Index> Offsets{ 0 };
-  std::vector<Index> Points;
+  Buffer<Index> Offsets{ 0 };
+  Buffer<Index> Points;
   bool AllTriangles = false; // then face f's corners are 3f, 3f + 1, 3f + 2
   Index Size() const { return static_cast<Index>(this->Offsets.size()) - 1; }
   Index Next(Index corner, Index face) const
@@ -105,9 +139,9 @@ struct FaceList
 // The corners at each point, as compressed rows.
 struct PointCorners
 {
-  std::vector<Index> Offsets;
-  std::vector<Index> Corners;
-  void Build(const std::vector<Index>& points, Index numberOfPoints)
+  Buffer<Index> Offsets;
+  Buffer<Index> Corners;
+  void Build(const Buffer<Index>& points, Index numberOfPoints)
   {
     this->Offsets.assign(numberOfPoints + 1, 0);
     for (Index point : points)
@@ -119,7 +153,7 @@ struct PointCorners
       this->Offsets[p + 1] += this->Offsets[p];
     }
     this->Corners.resize(points.size());
-    std::vector<Index> fill(this->Offsets.begin(), this->Offsets.end() - 1);
+    Buffer<Index> fill(this->Offsets.begin(), this->Offsets.end() - 1);
     for (Index c = 0; c < static_cast<Index>(points.size()); ++c)
     {
       this->Corners[fill[points[c]]++] = c;
@@ -164,45 +198,46 @@ struct vtkOpenMeshNormals::Internals
   // (polygons, then the strips' triangles), each in its consistent
   // orientation.
   FaceList Faces;
-  std::vector<Index> CornerFace;  // the face of each corner
-  std::vector<Index> FaceVertex;  // the OpenMesh vertex of each corner
-  std::vector<Index> FaceCell;    // the input cell each face comes from
-  std::vector<char> FaceReversed; // Consistency reversed the input order
-  std::vector<Index> FaceComponent;
-  std::vector<char> ComponentClosed;
-  std::vector<Index> PolyFace;   // each input polygon's face, -1 if degenerate
-  std::vector<Index> StripFaces; // the faces from triangle strips, in order
+  Buffer<Index> CornerFace;  // the face of each corner
+  Buffer<Index> FaceVertex;  // the OpenMesh vertex of each corner
+  Buffer<Index> FaceCell;    // the input cell each face comes from
+  Buffer<char> FaceReversed; // Consistency reversed the input order
+  Buffer<Index> FaceComponent;
+  Buffer<char> ComponentClosed;
+  Buffer<Index> PolyFace;   // each input polygon's face, -1 if degenerate
+  Buffer<Index> StripFaces; // the faces from triangle strips, in order
 
   HalfedgeMesh Mesh;
-  std::vector<Index> VertexPoint; // the input point of each OpenMesh vertex
-  std::vector<char> VertexIsCopy; // a copy made for a face OpenMesh refused
-  std::vector<Index> MeshFace;    // the face of each OpenMesh face
+  Buffer<Index> VertexPoint; // the input point of each OpenMesh vertex
+  Buffer<char> VertexIsCopy; // a copy made for a face OpenMesh refused
+  Buffer<Index> MeshFace;    // the face of each OpenMesh face (unless the identity)
+  bool MeshFaceIsIdentity = false;
 
   // The fan of each OpenMesh vertex in circulation order: corners, and
   // whether a corner shares an edge with the next one.
-  std::vector<Index> FanOffsets;
-  std::vector<Index> FanCorners;
-  std::vector<Index> FanFaces; // the face of each fan corner
-  std::vector<char> FanLinked;
+  Buffer<Index> FanOffsets;
+  Buffer<Index> FanCorners;
+  Buffer<Index> FanFaces; // the face of each fan corner
+  Buffer<char> FanLinked;
 
   // Per-update scratch, kept so that repeated updates reuse the memory.
-  std::vector<Vector> FaceNormal;
-  std::vector<char> FaceValid;
-  std::vector<float> CornerWeight;
-  std::vector<signed char> FaceSign;
-  std::vector<Vector> UnitNormal;
-  std::vector<char> Cuts;
-  std::vector<Index> WedgeCount;
-  std::vector<float> SingleNormal;
-  std::vector<Index> SplitCornerPoint;
-  std::vector<Index> FirstNewId;
+  std::vector<double, UninitializedAllocator<double>> FaceLength;
+  Buffer<char> FaceValid;
+  Buffer<float> CornerWeight;
+  Buffer<signed char> FaceSign;
+  Buffer<Vector> UnitNormal;
+  Buffer<char> Cuts;
+  Buffer<Index> WedgeCount;
+  Buffer<float> SingleNormal;
+  Buffer<Index> SplitCornerPoint;
+  Buffer<Index> FirstNewId;
 
   // The last output's connectivity and where its split points came from: a
   // positions-only update that cuts the fans at the same places reuses them.
-  std::vector<char> LastCuts;
+  Buffer<char> LastCuts;
   vtkSmartPointer<vtkCellArray> LastPolys;
-  std::vector<Index> LastSplitSource;
-  std::vector<Index> LastCornerPoint;
+  Buffer<Index> LastSplitSource;
+  Buffer<Index> LastCornerPoint;
 
   vtkIdType NonManifoldFaces = 0;
   vtkIdType RepeatedPointFaces = 0;
@@ -216,16 +251,16 @@ struct vtkOpenMeshNormals::Internals
 
 private:
   void ReadFaces(vtkPolyData* input);
-  std::vector<Index> FindTwins(const PointCorners& around, std::vector<char>& sameDirection) const;
-  bool Orient(const PointCorners& around, const std::vector<Index>& twins,
-    const std::vector<char>& sameDirection, bool traversal, std::vector<signed char>& orientation,
+  Buffer<Index> FindTwins(const PointCorners& around, Buffer<char>& sameDirection) const;
+  bool Orient(const PointCorners& around, const Buffer<Index>& twins,
+    const Buffer<char>& sameDirection, bool traversal, Buffer<signed char>& orientation,
     vtkOpenMeshNormals* self);
-  void Reverse(const std::vector<signed char>& orientation, std::vector<Index>& twins,
-    std::vector<char>& sameDirection);
-  std::vector<char> FindIrregularFaces(const PointCorners& around, const std::vector<Index>& twins,
-    const std::vector<char>& sameDirection) const;
-  bool LoadMesh(const PointCorners& around, const std::vector<Index>& twins,
-    const std::vector<char>& irregular, vtkOpenMeshNormals* self);
+  void Reverse(
+    const Buffer<signed char>& orientation, Buffer<Index>& twins, Buffer<char>& sameDirection);
+  Buffer<char> FindIrregularFaces(const PointCorners& around, const Buffer<Index>& twins,
+    const Buffer<char>& sameDirection) const;
+  bool LoadMesh(const PointCorners& around, const Buffer<Index>& twins,
+    const Buffer<char>& irregular, vtkOpenMeshNormals* self);
   void ReadFans();
 };
 
@@ -265,7 +300,7 @@ void vtkOpenMeshNormals::Internals::ReadFaces(vtkPolyData* input)
   if (onlyTriangles)
   {
     // The common case, in parallel: triangles, read straight from storage.
-    std::vector<char> good(numberOfPolys);
+    Buffer<char> good(numberOfPolys);
     VisitCells(polys,
       [&](const auto*, const auto* connectivity)
       {
@@ -285,7 +320,7 @@ void vtkOpenMeshNormals::Internals::ReadFaces(vtkPolyData* input)
           count += good[t];
         }
         this->RepeatedPointFaces = this->DegenerateFaces = numberOfPolys - count;
-        std::vector<Index> rank(numberOfPolys + 1, 0);
+        Buffer<Index> rank(numberOfPolys + 1, 0);
         for (Index t = 0; t < numberOfPolys; ++t)
         {
           rank[t + 1] = rank[t] + good[t];
@@ -401,15 +436,15 @@ void vtkOpenMeshNormals::Internals::ReadFaces(vtkPolyData* input)
 // For each corner, its twin, or NoTwin (a boundary edge) or NonManifoldEdge
 // (more than two faces on the edge). sameDirection: the twin runs the edge the
 // same way (the two faces are oriented inconsistently).
-std::vector<Index> vtkOpenMeshNormals::Internals::FindTwins(
-  const PointCorners& around, std::vector<char>& sameDirection) const
+Buffer<Index> vtkOpenMeshNormals::Internals::FindTwins(
+  const PointCorners& around, Buffer<char>& sameDirection) const
 {
   const FaceList& faces = this->Faces;
   const Index numberOfCorners = static_cast<Index>(faces.Points.size());
   // Each corner's next and previous points side by side: the search below
   // reads one small record per candidate instead of following three arrays.
   // Triangles find them by arithmetic and skip the copy.
-  std::vector<Index> neighbours(faces.AllTriangles ? 0 : 2 * static_cast<size_t>(numberOfCorners));
+  Buffer<Index> neighbours(faces.AllTriangles ? 0 : 2 * static_cast<size_t>(numberOfCorners));
   if (!faces.AllTriangles)
   {
     vtkSMPTools::For(0, faces.Size(),
@@ -435,8 +470,8 @@ std::vector<Index> vtkOpenMeshNormals::Internals::FindTwins(
     return faces.AllTriangles ? faces.Points[faces.Previous(c, 0)]
                               : neighbours[2 * static_cast<size_t>(c) + 1];
   };
-  std::vector<Index> twins(numberOfCorners, NoTwin);
-  sameDirection.assign(numberOfCorners, 0);
+  Buffer<Index> twins(numberOfCorners); // every entry written below
+  sameDirection.resize(numberOfCorners);
   vtkSMPTools::For(0, faces.Size(),
     [&](Index begin, Index end)
     {
@@ -484,9 +519,9 @@ std::vector<Index> vtkOpenMeshNormals::Internals::FindTwins(
 // Orientation by a breadth-first walk over twins per connected piece; each
 // piece keeps the orientation most of its faces already have (not that of the
 // face the walk started from). Fills FaceComponent and ComponentClosed.
-bool vtkOpenMeshNormals::Internals::Orient(const PointCorners& around,
-  const std::vector<Index>& twins, const std::vector<char>& sameDirection, bool traversal,
-  std::vector<signed char>& orientation, vtkOpenMeshNormals* self)
+bool vtkOpenMeshNormals::Internals::Orient(const PointCorners& around, const Buffer<Index>& twins,
+  const Buffer<char>& sameDirection, bool traversal, Buffer<signed char>& orientation,
+  vtkOpenMeshNormals* self)
 {
   const FaceList& faces = this->Faces;
   const Index numberOfFaces = faces.Size();
@@ -519,7 +554,7 @@ bool vtkOpenMeshNormals::Internals::Orient(const PointCorners& around,
     }
   };
 
-  std::vector<Index> order;
+  Buffer<Index> order;
   order.reserve(numberOfFaces);
   for (Index seed = 0; seed < numberOfFaces; ++seed)
   {
@@ -592,8 +627,8 @@ bool vtkOpenMeshNormals::Internals::Orient(const PointCorners& around,
 //------------------------------------------------------------------------------
 // Reverses the faces whose orientation is -1, in place: (p0, p1, ..., pn-1)
 // becomes (p0, pn-1, ..., p1), so the edge of corner j moves to corner n-1-j.
-void vtkOpenMeshNormals::Internals::Reverse(const std::vector<signed char>& orientation,
-  std::vector<Index>& twins, std::vector<char>& sameDirection)
+void vtkOpenMeshNormals::Internals::Reverse(
+  const Buffer<signed char>& orientation, Buffer<Index>& twins, Buffer<char>& sameDirection)
 {
   FaceList& faces = this->Faces;
   const Index numberOfCorners = static_cast<Index>(faces.Points.size());
@@ -607,8 +642,8 @@ void vtkOpenMeshNormals::Internals::Reverse(const std::vector<signed char>& orie
     const Index first = faces.Offsets[f], last = faces.Offsets[f + 1];
     return first + (last - 1 - corner);
   };
-  std::vector<Index> newTwins(numberOfCorners);
-  std::vector<char> newSame(numberOfCorners);
+  Buffer<Index> newTwins(numberOfCorners);
+  Buffer<char> newSame(numberOfCorners);
   vtkSMPTools::For(0, numberOfCorners,
     [&](Index begin, Index end)
     {
@@ -641,13 +676,13 @@ void vtkOpenMeshNormals::Internals::Reverse(const std::vector<signed char>& orie
 // Faces the direct construction leaves to OpenMesh's add_face: those on a
 // non-manifold or inconsistent edge, and every face around a point whose
 // other faces do not make one fan (one cycle or one open chain).
-std::vector<char> vtkOpenMeshNormals::Internals::FindIrregularFaces(const PointCorners& around,
-  const std::vector<Index>& twins, const std::vector<char>& sameDirection) const
+Buffer<char> vtkOpenMeshNormals::Internals::FindIrregularFaces(
+  const PointCorners& around, const Buffer<Index>& twins, const Buffer<char>& sameDirection) const
 {
   const FaceList& faces = this->Faces;
   const Index numberOfFaces = faces.Size();
   const Index numberOfPoints = static_cast<Index>(around.Offsets.size()) - 1;
-  std::vector<char> irregular(numberOfFaces, 0);
+  Buffer<char> irregular(numberOfFaces, 0);
   vtkSMPTools::For(0, numberOfFaces,
     [&](Index begin, Index end)
     {
@@ -716,7 +751,7 @@ std::vector<char> vtkOpenMeshNormals::Internals::FindIrregularFaces(const PointC
     }
     return visited == count;
   };
-  std::vector<char> pointRegular(numberOfPoints, 1);
+  Buffer<char> pointRegular(numberOfPoints, 1);
   std::atomic<bool> anyIrregular(false);
   vtkSMPTools::For(0, numberOfPoints,
     [&](Index begin, Index end)
@@ -736,7 +771,7 @@ std::vector<char> vtkOpenMeshNormals::Internals::FindIrregularFaces(const PointC
   }
   // Spread, rarely: an irregular point's faces go to add_face, which can
   // leave the regular faces around their other points in several fans.
-  std::vector<Index> work;
+  Buffer<Index> work;
   for (Index p = 0; p < numberOfPoints; ++p)
   {
     if (!pointRegular[p])
@@ -746,7 +781,7 @@ std::vector<char> vtkOpenMeshNormals::Internals::FindIrregularFaces(const PointC
   }
   while (!work.empty())
   {
-    std::vector<Index> touched;
+    Buffer<Index> touched;
     for (Index p : work)
     {
       for (Index i = around.Offsets[p]; i < around.Offsets[p + 1]; ++i)
@@ -779,8 +814,8 @@ std::vector<char> vtkOpenMeshNormals::Internals::FindIrregularFaces(const PointC
 // OpenMesh's kernel, in parallel, in the state add_face would leave them in;
 // the others go through add_face, and a face it refuses gets its own copies
 // of its vertices, as OpenMesh's importer does.
-bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around,
-  const std::vector<Index>& twins, const std::vector<char>& irregular, vtkOpenMeshNormals* self)
+bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around, const Buffer<Index>& twins,
+  const Buffer<char>& irregular, vtkOpenMeshNormals* self)
 {
   const FaceList& faces = this->Faces;
   const Index numberOfFaces = faces.Size();
@@ -790,7 +825,7 @@ bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around,
   mesh.clear();
 
   // One vertex for every point some face uses, in point order.
-  std::vector<Index> vertexOfPoint(numberOfPoints, -1);
+  Buffer<Index> vertexOfPoint(numberOfPoints, -1);
   this->VertexPoint.clear();
   for (Index p = 0; p < numberOfPoints; ++p)
   {
@@ -806,22 +841,13 @@ bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around,
   // Regular faces first: OpenMesh face i is the i-th regular face. A regular
   // corner owns its edge unless its twin is an earlier regular corner.
   const bool allRegular = std::find(irregular.begin(), irregular.end(), 1) == irregular.end();
-  std::vector<Index> meshFaceOf(numberOfFaces, -1);
+  // With every face regular OpenMesh's faces are the filter's, in order.
+  Buffer<Index> meshFaceOf;
   this->MeshFace.clear();
-  if (allRegular)
+  this->MeshFaceIsIdentity = allRegular;
+  if (!allRegular)
   {
-    this->MeshFace.resize(numberOfFaces);
-    vtkSMPTools::For(0, numberOfFaces,
-      [&](Index begin, Index end)
-      {
-        for (Index f = begin; f < end; ++f)
-        {
-          meshFaceOf[f] = this->MeshFace[f] = f;
-        }
-      });
-  }
-  else
-  {
+    meshFaceOf.assign(numberOfFaces, -1);
     for (Index f = 0; f < numberOfFaces; ++f)
     {
       if (!irregular[f])
@@ -831,7 +857,8 @@ bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around,
       }
     }
   }
-  const Index numberOfRegularFaces = static_cast<Index>(this->MeshFace.size());
+  const Index numberOfRegularFaces =
+    allRegular ? numberOfFaces : static_cast<Index>(this->MeshFace.size());
   auto regularTwin = [&](Index c)
   {
     const Index twin = twins[c];
@@ -844,8 +871,8 @@ bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around,
   // Halfedge ids: a corner owning its edge takes halfedge 2e (its own
   // direction), its twin 2e + 1. Owners are counted per face in parallel and
   // numbered in face order.
-  std::vector<Index> halfedgeOfCorner(numberOfCorners, -1);
-  std::vector<Index> firstEdge(numberOfFaces + 1, 0);
+  Buffer<Index> halfedgeOfCorner(numberOfCorners, -1);
+  Buffer<Index> firstEdge(numberOfFaces + 1, 0);
   auto owns = [&](Index c)
   {
     const Index twin = regularTwin(c);
@@ -903,7 +930,7 @@ bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around,
       }
     });
   mesh.resize(numberOfVertices, numberOfEdges, numberOfRegularFaces);
-  this->FaceVertex.assign(numberOfCorners, -1);
+  this->FaceVertex.resize(numberOfCorners); // every corner written below
   vtkSMPTools::For(0, numberOfFaces,
     [&](Index begin, Index end)
     {
@@ -913,7 +940,7 @@ bool vtkOpenMeshNormals::Internals::LoadMesh(const PointCorners& around,
         {
           continue;
         }
-        const FaceHandle face(meshFaceOf[f]);
+        const FaceHandle face(allRegular ? f : meshFaceOf[f]);
         for (Index c = faces.Offsets[f]; c < faces.Offsets[f + 1]; ++c)
         {
           const Index next = faces.Next(c, f);
@@ -1080,7 +1107,8 @@ void vtkOpenMeshNormals::Internals::ReadFans()
           {
             if (!mesh.is_boundary(h))
             {
-              const Index f = this->MeshFace[mesh.face_handle(h).idx()];
+              const Index meshFace = mesh.face_handle(h).idx();
+              const Index f = this->MeshFaceIsIdentity ? meshFace : this->MeshFace[meshFace];
               Index corner = this->Faces.Offsets[f];
               while (this->FaceVertex[corner] != v)
               {
@@ -1134,14 +1162,14 @@ bool vtkOpenMeshNormals::Internals::Build(
 
   PointCorners around;
   around.Build(this->Faces.Points, numberOfPoints);
-  std::vector<char> sameDirection;
-  std::vector<Index> twins = this->FindTwins(around, sameDirection);
+  Buffer<char> sameDirection;
+  Buffer<Index> twins = this->FindTwins(around, sameDirection);
   self->UpdateProgress(0.25);
 
   // Orientation. A mesh whose neighbours already agree keeps its orientation
   // without a walk, unless the pieces are needed (AutoOrientNormals sees
   // them as closed or not through ComponentClosed).
-  std::vector<signed char> orientation;
+  Buffer<signed char> orientation;
   const bool disagreement =
     std::any_of(sameDirection.begin(), sameDirection.end(), [](char same) { return same != 0; }) ||
     (traversal &&
@@ -1187,8 +1215,8 @@ bool vtkOpenMeshNormals::Internals::Build(
   }
   self->UpdateProgress(0.4);
 
-  const std::vector<char> irregular = incremental
-    ? std::vector<char>(numberOfFaces, 1)
+  const Buffer<char> irregular = incremental
+    ? Buffer<char>(numberOfFaces, 1)
     : this->FindIrregularFaces(around, twins, sameDirection);
   self->UpdateProgress(0.5);
   if (!this->LoadMesh(around, twins, irregular, self))
@@ -1329,9 +1357,12 @@ int vtkOpenMeshNormals::RequestData(
 
   // Face normals by Newell's method about the first corner (twice the area
   // times the unit normal), and which faces are usable.
-  std::vector<Vector>& faceNormal = topology.FaceNormal;
-  std::vector<char>& faceValid = topology.FaceValid;
-  faceNormal.resize(numberOfFaces);
+  // Each face's unit normal (sign applied below) and Newell length (twice the area).
+  auto& faceLength = topology.FaceLength;
+  Buffer<Vector>& unitNormal = topology.UnitNormal;
+  unitNormal.resize(numberOfFaces);
+  Buffer<char>& faceValid = topology.FaceValid;
+  faceLength.resize(numberOfFaces);
   faceValid.resize(numberOfFaces);
   // For a triangle, the cross product of the two edges at any corner is the
   // face's Newell vector N, so every weighting is a number per corner times
@@ -1339,7 +1370,7 @@ int vtkOpenMeshNormals::RequestData(
   // Max |N| / (|e1|^2 |e2|^2). Polygons take the general path below.
   const int weighting = this->Weighting;
   const bool triangles = faces.AllTriangles;
-  std::vector<float>& cornerWeight = topology.CornerWeight;
+  Buffer<float>& cornerWeight = topology.CornerWeight;
   cornerWeight.resize(triangles ? numberOfCorners : 0);
   vtkSMPTools::For(0, numberOfFaces,
     [&](vtkIdType begin, vtkIdType end)
@@ -1363,7 +1394,9 @@ int vtkOpenMeshNormals::RequestData(
         const double length = std::sqrt(Dot(sum, sum));
         const bool valid = finite && length > 0.0 && std::isfinite(length);
         faceValid[f] = valid;
-        faceNormal[f] = sum;
+        faceLength[f] = length;
+        const double scale = valid ? 1.0 / length : 0.0;
+        unitNormal[f] = { scale * sum[0], scale * sum[1], scale * sum[2] };
         if (!triangles)
         {
           continue;
@@ -1405,7 +1438,7 @@ int vtkOpenMeshNormals::RequestData(
   // Orientation of each piece: AutoOrientNormals turns closed pieces outward
   // (positive signed volume), FlipNormals reverses everything.
   const vtkIdType numberOfComponents = static_cast<vtkIdType>(topology.ComponentClosed.size());
-  std::vector<signed char> componentSign(numberOfComponents, 1);
+  Buffer<signed char> componentSign(numberOfComponents, 1);
   if (this->AutoOrientNormals)
   {
     std::vector<double> volume(numberOfComponents, 0.0);
@@ -1417,8 +1450,8 @@ int vtkOpenMeshNormals::RequestData(
         // The cone from the origin over a planar face has volume N.p0 / 6;
         // these add up to the piece's signed volume.
         const double* p = position(faces.Offsets[f]);
-        volume[c] +=
-          (faceNormal[f][0] * p[0] + faceNormal[f][1] * p[1] + faceNormal[f][2] * p[2]) / 6.0;
+        volume[c] += faceLength[f] *
+          (unitNormal[f][0] * p[0] + unitNormal[f][1] * p[1] + unitNormal[f][2] * p[2]) / 6.0;
       }
     }
     for (vtkIdType c = 0; c < numberOfComponents; ++c)
@@ -1427,21 +1460,19 @@ int vtkOpenMeshNormals::RequestData(
     }
   }
   const signed char flip = this->FlipNormals ? -1 : 1;
-  std::vector<signed char>& faceSign = topology.FaceSign;
-  std::vector<Vector>& unitNormal = topology.UnitNormal;
+  Buffer<signed char>& faceSign = topology.FaceSign;
   faceSign.resize(numberOfFaces);
-  unitNormal.resize(numberOfFaces);
   vtkSMPTools::For(0, numberOfFaces,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType f = begin; f < end; ++f)
       {
-        const double sign = componentSign[topology.FaceComponent[f]] * flip;
-        faceSign[f] = static_cast<signed char>(sign);
-        const double scale =
-          faceValid[f] ? sign / std::sqrt(Dot(faceNormal[f], faceNormal[f])) : 0.0;
-        unitNormal[f] = { scale * faceNormal[f][0], scale * faceNormal[f][1],
-          scale * faceNormal[f][2] };
+        const signed char sign = componentSign[topology.FaceComponent[f]] * flip;
+        faceSign[f] = sign;
+        if (sign < 0)
+        {
+          unitNormal[f] = { -unitNormal[f][0], -unitNormal[f][1], -unitNormal[f][2] };
+        }
       }
     });
   for (vtkIdType f = 0; f < numberOfFaces; ++f)
@@ -1476,7 +1507,7 @@ int vtkOpenMeshNormals::RequestData(
     double weight = 1.0;
     if (weighting == Area)
     {
-      weight = 0.5 * std::sqrt(Dot(faceNormal[f], faceNormal[f]));
+      weight = 0.5 * faceLength[f];
     }
     else if (weighting != Uniform)
     {
@@ -1510,10 +1541,10 @@ int vtkOpenMeshNormals::RequestData(
   };
 
   // Point normals, and the output point of each corner.
-  const std::vector<Index>* cornerPoint = &faces.Points;
-  std::vector<Index>& splitCornerPoint = topology.SplitCornerPoint;
+  const Buffer<Index>* cornerPoint = &faces.Points;
+  Buffer<Index>& splitCornerPoint = topology.SplitCornerPoint;
   vtkSmartPointer<vtkFloatArray> pointNormals;
-  std::vector<Index> splitSource; // the input point of each added point
+  Buffer<Index> splitSource; // the input point of each added point
   const bool splitting = this->Splitting && this->ComputePointNormals;
   bool sameConnectivity = false;
   if (this->ComputePointNormals && !splitting)
@@ -1522,7 +1553,7 @@ int vtkOpenMeshNormals::RequestData(
     pointNormals = vtkSmartPointer<vtkFloatArray>::New();
     pointNormals->SetNumberOfComponents(3);
     pointNormals->SetNumberOfTuples(numberOfPoints);
-    std::vector<Vector> sums(numberOfPoints, Vector{ 0.0, 0.0, 0.0 });
+    Buffer<Vector> sums(numberOfPoints, Vector{ 0.0, 0.0, 0.0 });
     for (vtkIdType c = 0; c < numberOfCorners; ++c)
     {
       contribution(c, sums[faces.Points[c]]);
@@ -1541,13 +1572,13 @@ int vtkOpenMeshNormals::RequestData(
     // Cut each fan at gaps and sharp edges into wedges; one output point per
     // wedge. The first wedge of a point's own vertex keeps the point's id.
     const double cosFeature = std::cos(vtkMath::RadiansFromDegrees(this->FeatureAngle));
-    std::vector<char>& cuts = topology.Cuts;
-    std::vector<Index>& wedgeCount = topology.WedgeCount;
+    Buffer<char>& cuts = topology.Cuts;
+    Buffer<Index>& wedgeCount = topology.WedgeCount;
     cuts.resize(topology.FanCorners.size());
     wedgeCount.resize(numberOfVertices);
     // A vertex of one wedge (most of them) is done in this first pass: its
     // normal goes to its point, its corners to its point id.
-    std::vector<float>& singleNormal = topology.SingleNormal;
+    Buffer<float>& singleNormal = topology.SingleNormal;
     singleNormal.resize(3 * static_cast<size_t>(numberOfVertices));
     splitCornerPoint.resize(numberOfCorners);
     vtkSMPTools::For(0, numberOfVertices,
@@ -1585,9 +1616,9 @@ int vtkOpenMeshNormals::RequestData(
       });
     // Output ids: a point's own vertex keeps its id for its first wedge; the
     // other wedges and all wedges of copies are new points, in vertex order.
-    std::vector<Index>& firstNewId = topology.FirstNewId;
+    Buffer<Index>& firstNewId = topology.FirstNewId;
     firstNewId.resize(numberOfVertices);
-    std::vector<Index> multiWedge; // the vertices left for the second pass
+    Buffer<Index> multiWedge; // the vertices left for the second pass
     Index nextId = static_cast<Index>(numberOfPoints);
     for (Index v = 0; v < numberOfVertices; ++v)
     {
@@ -1771,7 +1802,7 @@ int vtkOpenMeshNormals::RequestData(
     auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
     connectivity->SetNumberOfTuples(offsets[numberOfPolys + numberOfStripFaces]);
     vtkIdType* ids = connectivity->GetPointer(0);
-    const std::vector<Index>& pointOfCorner = *cornerPoint;
+    const Buffer<Index>& pointOfCorner = *cornerPoint;
     auto writeFace = [&](vtkIdType f, vtkIdType* out)
     {
       const vtkIdType first = faces.Offsets[f], size = faces.Offsets[f + 1] - first;
