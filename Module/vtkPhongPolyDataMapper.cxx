@@ -118,6 +118,10 @@ const char* vtkPhongPolyDataMapper::GetDebugViewAsString()
       return "ShadingNormal";
     case SingleLight:
       return "SingleLight";
+    case PositionVC:
+      return "PositionVC";
+    case NormalVC:
+      return "NormalVC";
     case Final:
     default:
       return "Final";

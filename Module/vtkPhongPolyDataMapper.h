@@ -53,6 +53,14 @@ public:
    * What the mapper shows: the final colour, one term alone (textures still multiply the
    * ambient and diffuse terms), the shading normal as a colour ((N + 1) / 2, view
    * coordinates), or the full contribution of the light chosen by DebugLightIndex.
+   *
+   * PositionVC and NormalVC write a G-buffer for a float target (vtkPhongFloatRenderPass):
+   * the shaded point's view-coordinate position, and the shading normal exactly as the
+   * lighting uses it (unit, view coordinates, after the fallbacks and the turn towards the
+   * viewer), unencoded. Their alpha is 1 on front faces and 0.5 on back faces, so the
+   * material side can be told; an 8-bit window clamps them. vtkPhongReference shades such a
+   * G-buffer in double precision to measure the shading arithmetic alone. Per-vertex
+   * Gouraud has no per-fragment normal: NormalVC shows the interpolated one.
    */
   enum DebugViews
   {
@@ -62,7 +70,9 @@ public:
     SpecularTerm = 3,
     EmissionTerm = 4,
     ShadingNormal = 5,
-    SingleLight = 6
+    SingleLight = 6,
+    PositionVC = 7,
+    NormalVC = 8
   };
 
   ///@{
@@ -70,7 +80,7 @@ public:
    * The debug view. Default Final; one of the DebugViews (values are clamped).
    * Each view is its own shader variant.
    */
-  vtkSetClampMacro(DebugView, int, Final, SingleLight);
+  vtkSetClampMacro(DebugView, int, Final, NormalVC);
   vtkGetMacro(DebugView, int);
   void SetDebugViewToFinal() { this->SetDebugView(Final); }
   void SetDebugViewToAmbientTerm() { this->SetDebugView(AmbientTerm); }
@@ -79,6 +89,8 @@ public:
   void SetDebugViewToEmissionTerm() { this->SetDebugView(EmissionTerm); }
   void SetDebugViewToShadingNormal() { this->SetDebugView(ShadingNormal); }
   void SetDebugViewToSingleLight() { this->SetDebugView(SingleLight); }
+  void SetDebugViewToPositionVC() { this->SetDebugView(PositionVC); }
+  void SetDebugViewToNormalVC() { this->SetDebugView(NormalVC); }
   const char* GetDebugViewAsString();
   ///@}
 

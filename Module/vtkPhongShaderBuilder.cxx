@@ -146,9 +146,11 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   {
     return plan;
   }
-  if (litWithoutLights && options.DebugView == View::ShadingNormal)
+  const bool geometryView = options.DebugView == View::ShadingNormal ||
+    options.DebugView == View::PositionVC || options.DebugView == View::NormalVC;
+  if (litWithoutLights && geometryView)
   {
-    return plan; // VTK provides no normal to an unlit primitive
+    return plan; // VTK provides no normal or view-space position to an unlit primitive
   }
   plan.Handled = true;
   plan.DebugView = options.DebugView;
@@ -250,7 +252,7 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
 
   const bool perVertex = lightSums && phongFront && phongFront->GetPerVertexGouraud() &&
     front->GetInterpolation() == VTK_GOURAUD && state.HasPointNormals && !state.NormalsFromShape &&
-    view != View::ShadingNormal;
+    !geometryView;
   set("PER_VERTEX", perVertex);
   set("SUMS_PER_VERTEX", lightSums && perVertex);
   set("SUMS_PER_FRAGMENT", lightSums && !perVertex);
@@ -258,8 +260,11 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   set("TWO_SIDED", twoSided);
   set("BACK_MATERIAL", back != front);
   set("DEBUG_NORMAL", view == View::ShadingNormal);
+  set("DEBUG_NORMAL_VC", view == View::NormalVC);
+  set("DEBUG_POSITION_VC", view == View::PositionVC);
 
-  const bool shadingNormal = (lightSums && !perVertex) || view == View::ShadingNormal;
+  const bool normalView = view == View::ShadingNormal || view == View::NormalVC;
+  const bool shadingNormal = (lightSums && !perVertex) || normalView;
   set("SHADING_NORMAL", shadingNormal);
   set("ONE_SIDED", shadingNormal && !twoSided);
   // Zero, NaN or infinite normals in the data take the face's geometric normal

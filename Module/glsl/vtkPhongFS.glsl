@@ -141,3 +141,11 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_IF DEBUG_NORMAL
   gl_FragData[0] = vec4(0.5 * phongNormalVC + 0.5, 1.0);
 //PHONG_ENDIF
+//PHONG_IF DEBUG_NORMAL_VC
+  // G-buffer: the shading normal as is, for a float target; alpha tells the side.
+  gl_FragData[0] = vec4(phongNormalVC, gl_FrontFacing ? 1.0 : 0.5);
+//PHONG_ENDIF
+//PHONG_IF DEBUG_POSITION_VC
+  // G-buffer: the shaded point in view coordinates, for a float target.
+  gl_FragData[0] = vec4(vertexVC.xyz, gl_FrontFacing ? 1.0 : 0.5);
+//PHONG_ENDIF
