@@ -6,6 +6,8 @@
 #                          Blinn-Phong) and print the image's path
 #   ./vtkphong.sh test     run every test (ctest under Xvfb)
 #   ./vtkphong.sh bench    run the benchmarks and print their tables
+#   ./vtkphong.sh extremes run the numerical-stability suite (float GPU against
+#                          the double-precision reference) and print its table
 #
 # The build directory is ./build (override with VTKPHONG_BUILD_DIR).
 set -euo pipefail
@@ -85,8 +87,15 @@ case "$command" in
     extract_meshes data/meshes/refined_elephant.off
     "$build/bin/vtkOpenMeshNormalsBenchmark" "$build/data/meshes/refined_elephant.off"
     ;;
+  extremes)
+    install_packages
+    build_project
+    mkdir -p "$build/Testing/Temporary"
+    with_display "$build/bin/vtkRenderingPhongCxxTests" TestPhongExtremes \
+      -T "$build/Testing/Temporary"
+    ;;
   *)
-    sed -n '2,11p' "$0" >&2
+    sed -n '2,13p' "$0" >&2
     exit 2
     ;;
 esac

@@ -121,7 +121,10 @@ float phongSpecular(vec3 N, vec3 L, vec3 V, float NdotL, float shininess)
   return lobe * max(NdotL, 0.0);
 //PHONG_ENDIF
 //PHONG_IF !SMOOTH_TERMINATOR
-  return NdotL > 0.0 ? lobe : 0.0;
+  // The gate opens a little above N.L = 0: a light in the surface's plane (a box face
+  // along an axis-aligned light) has N.L = 0 up to rounding, and a gate at exactly 0 would
+  // scatter highlights over the face at random (docs/extremes.md).
+  return NdotL > 1.0e-4 ? lobe : 0.0;
 //PHONG_ENDIF
 }
 //PHONG_ENDIF

@@ -3,13 +3,14 @@ defaults, clamps and errors, and the enums, through VTK's own wrappers."""
 
 import vtkphong
 from vtkmodules.vtkCommonCore import vtkCommand
-from vtkmodules.vtkRenderingCore import vtkActor, vtkProperty
+from vtkmodules.vtkRenderingCore import vtkActor, vtkProperty, vtkRenderer
 from vtkphong_testing import Checks
 
 checks = Checks()
 
 for name in ("vtkPhongPolyDataMapper", "vtkPhongProperty", "vtkPhongOFFReader",
-             "vtkOpenMeshNormals"):
+             "vtkOpenMeshNormals", "vtkPhongFloatRenderPass", "vtkPhongReference",
+             "vtkPhongImageComparison", "vtkPhongImageIO"):
     cls = getattr(vtkphong, name, None)
     checks.expect(cls is not None, "vtkphong exposes " + name)
     checks.expect(cls is not None and bool(cls.__doc__), name + " has a docstring")
@@ -47,7 +48,7 @@ checks.expect(material.GetShininess() == 0.0 and len(messages) == 2, "negative s
 mapper = vtkphong.vtkPhongPolyDataMapper()
 checks.expect(mapper.GetDebugView() == vtkphong.vtkPhongPolyDataMapper.Final, "default view")
 for view in ("AmbientTerm", "DiffuseTerm", "SpecularTerm", "EmissionTerm", "ShadingNormal",
-             "SingleLight", "Final"):
+             "SingleLight", "PositionVC", "NormalVC", "Final"):
     getattr(mapper, "SetDebugViewTo" + view)()
     checks.expect(mapper.GetDebugViewAsString() == view, "debug view " + view)
 mapper.SetDebugLightIndex(3)
@@ -76,4 +77,26 @@ actor = vtkActor()
 actor.SetMapper(mapper)
 actor.SetProperty(material)
 checks.expect(actor.GetProperty() is material, "an actor takes a vtkPhongProperty")
+
+# The measuring tools.
+float_pass = vtkphong.vtkPhongFloatRenderPass()
+checks.expect(float_pass.GetCopyToWindow() and not float_pass.GetBlending(), "float pass defaults")
+checks.expect(float_pass.GetDelegatePass().IsA("vtkRenderStepsPass"), "default delegate")
+reference = vtkphong.vtkPhongReference()
+reference.SetSurfaceToTorus(0.0, 0.0, 0.0, 1.0, 0.25)
+checks.expect(reference.GetSurface() == vtkphong.vtkPhongReference.Torus, "reference surface")
+renderer = vtkRenderer()
+renderer.SetAmbient(0.5, 0.5, 0.5)
+plain = vtkActor()
+plain.GetProperty().SetAmbient(1.0)
+plain.GetProperty().SetColor(1.0, 0.5, 0.25)
+reference.SetRenderer(renderer)
+reference.SetActor(plain)
+reference.SetImageSize(4, 4)
+rgb = [0.0, 0.0, 0.0]
+reference.ShadePoint((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), False, rgb)
+checks.expect(rgb == [0.5, 0.25, 0.125], "ShadePoint: ka*Ca*Ia without lights, got %s" % rgb)
+comparison = vtkphong.vtkPhongImageComparison()
+checks.expect(abs(comparison.GetThreshold() - 1.0 / 255.0) < 1e-12, "threshold: one level")
+checks.expect(hasattr(vtkphong.vtkPhongImageIO(), "WriteImage"), "vtkPhongImageIO.WriteImage")
 checks.exit()

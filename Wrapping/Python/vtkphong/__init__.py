@@ -10,7 +10,14 @@ freely with ``vtkmodules``::
     material = vtkPhongProperty()
     material.SetLightingModelToBlinnPhong()
     material.SetShininess(2000.0)  # vtkProperty.SetSpecularPower stops at 128
-    actor = vtkActor(mapper=mapper, property=material)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.SetProperty(material)
+
+Besides the mapper and its material, the package holds vtkOpenMeshNormals (normals
+for meshes without them), vtkPhongFloatRenderPass (float read-back), and the
+measuring tools: vtkPhongReference (the model in double precision),
+vtkPhongImageComparison and vtkPhongImageIO (OpenImageIO).
 
 The lighting equation is described in docs/lighting-model.md of the project.
 """
@@ -20,3 +27,4 @@ The lighting equation is described in docs/lighting-model.md of the project.
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 from .vtkRenderingPhong import *  # noqa: F401,F403
+from .vtkPhongReference import *  # noqa: F401,F403
