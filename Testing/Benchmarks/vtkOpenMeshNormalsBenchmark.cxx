@@ -49,7 +49,7 @@ struct Contender
 {
   std::string Name;
   std::function<void()> Run; // one timed execution
-  std::vector<double> Seconds;
+  std::vector<double> Seconds = {};
 };
 
 void Measure(const std::string& name, vtkPolyData* mesh, int rounds)

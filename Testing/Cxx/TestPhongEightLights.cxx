@@ -10,7 +10,6 @@ int TestPhongEightLights(int argc, char* argv[])
 {
   vtkPhongTest::Scene scene;
   scene.Renderer->AutomaticLightCreationOff();
-  const double origin[3] = { 0.0, 0.0, 0.0 };
   struct LightSpec
   {
     double Position[3];
