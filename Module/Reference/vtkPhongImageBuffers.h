@@ -4,7 +4,8 @@
 //
 // Orientation: a vtkImageData's first row is the bottom of the picture; an image file's first
 // row is the top. The buffers made here keep VTK's row order (y = VTK row), so pixel
-// coordinates agree with VTK's; only files are flipped, on the way in and out.
+// coordinates agree with VTK's; only files are flipped, on the way out (vtkPhongImageIO
+// flips on the way in as it reads).
 
 #ifndef vtkPhongImageBuffers_h
 #define vtkPhongImageBuffers_h
@@ -95,21 +96,6 @@ inline bool ToFloatBuffer(vtkImageData* image, OIIO::ImageBuf& buffer, std::stri
       }
   }
   return true;
-}
-
-// An image of float scalars (named "RGBA", "RGB", ...) holding a float buffer's values.
-inline void FromFloatBuffer(const OIIO::ImageBuf& buffer, vtkImageData* image)
-{
-  const OIIO::ImageSpec& spec = buffer.spec();
-  static const char* const names[] = { "Luminance", "LuminanceAlpha", "RGB", "RGBA" };
-  vtkNew<vtkFloatArray> scalars;
-  scalars->SetName(spec.nchannels <= 4 ? names[spec.nchannels - 1] : "Channels");
-  scalars->SetNumberOfComponents(spec.nchannels);
-  scalars->SetNumberOfTuples(static_cast<vtkIdType>(spec.width) * spec.height);
-  buffer.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, scalars->GetPointer(0));
-  image->Initialize();
-  image->SetDimensions(spec.width, spec.height, 1);
-  image->GetPointData()->SetScalars(scalars);
 }
 
 } // namespace vtkPhongImageBuffers

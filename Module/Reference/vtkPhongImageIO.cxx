@@ -1,13 +1,16 @@
 #include "vtkPhongImageIO.h"
 
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "vtkPhongImageBuffers.h"
 
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
 
 vtkStandardNewMacro(vtkPhongImageIO);
 
@@ -71,35 +74,49 @@ int vtkPhongImageIO::ReadImage(const char* fileName, vtkImageData* output)
     vtkErrorMacro("ReadImage needs a file name and an output image.");
     return 0;
   }
-  OIIO::ImageBuf file(fileName);
-  if (!file.read(0, 0, true))
+  // ImageInput rather than ImageBuf: ImageBuf goes through OpenImageIO's shared image
+  // cache, which serves a file rewritten within the same second from memory.
+  auto input = OIIO::ImageInput::open(fileName);
+  if (!input)
   {
-    vtkErrorMacro("Cannot read " << fileName << ": " << file.geterror() << ".");
+    vtkErrorMacro("Cannot read " << fileName << ": " << OIIO::geterror() << ".");
     return 0;
   }
-  const OIIO::ImageSpec& spec = file.spec();
+  const OIIO::ImageSpec spec = input->spec();
   if (spec.nchannels < 1 || spec.nchannels > 4 || spec.depth > 1)
   {
     vtkErrorMacro("Cannot read " << fileName << ": " << spec.nchannels << " channels, depth "
                                  << spec.depth << " (2D images of 1 to 4 channels supported).");
     return 0;
   }
-  OIIO::ImageBuf flipped = OIIO::ImageBufAlgo::flip(file);
-  if (spec.format == OIIO::TypeDesc::UINT8)
+  const bool bytes = spec.format == OIIO::TypeDesc::UINT8;
+  static const char* const names[] = { "Luminance", "LuminanceAlpha", "RGB", "RGBA" };
+  vtkSmartPointer<vtkDataArray> scalars;
+  if (bytes)
   {
-    static const char* const names[] = { "Luminance", "LuminanceAlpha", "RGB", "RGBA" };
-    vtkNew<vtkUnsignedCharArray> scalars;
-    scalars->SetName(names[spec.nchannels - 1]);
-    scalars->SetNumberOfComponents(spec.nchannels);
-    scalars->SetNumberOfTuples(static_cast<vtkIdType>(spec.width) * spec.height);
-    flipped.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, scalars->GetPointer(0));
-    output->Initialize();
-    output->SetDimensions(spec.width, spec.height, 1);
-    output->GetPointData()->SetScalars(scalars);
+    scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
   }
   else
   {
-    vtkPhongImageBuffers::FromFloatBuffer(flipped, output);
+    scalars = vtkSmartPointer<vtkFloatArray>::New();
   }
+  scalars->SetName(names[spec.nchannels - 1]);
+  scalars->SetNumberOfComponents(spec.nchannels);
+  scalars->SetNumberOfTuples(static_cast<vtkIdType>(spec.width) * spec.height);
+  // The file's first row is the picture's top; VTK's is the bottom: read the rows in
+  // reverse with a negative stride.
+  const OIIO::TypeDesc type = bytes ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+  const OIIO::stride_t pixelBytes = static_cast<OIIO::stride_t>(type.size()) * spec.nchannels;
+  const OIIO::stride_t rowBytes = pixelBytes * spec.width;
+  auto* last = static_cast<char*>(scalars->GetVoidPointer(0)) + rowBytes * (spec.height - 1);
+  if (!input->read_image(0, 0, 0, spec.nchannels, type, last, pixelBytes, -rowBytes))
+  {
+    vtkErrorMacro("Cannot read " << fileName << ": " << input->geterror() << ".");
+    return 0;
+  }
+  input->close();
+  output->Initialize();
+  output->SetDimensions(spec.width, spec.height, 1);
+  output->GetPointData()->SetScalars(scalars);
   return 1;
 }
