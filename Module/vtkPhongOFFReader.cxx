@@ -168,7 +168,15 @@ int vtkPhongOFFReader::RequestData(
   const std::string keyword = lines.Tokens[0];
   if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
   {
-    return fail("not an OFF file (it starts with \"" + keyword + "\").");
+    // Quote the start of what was found, printable and short: a binary file's bytes would
+    // fill the terminal.
+    std::string quoted = keyword.substr(0, 32);
+    for (char& c : quoted)
+    {
+      c = (c >= 32 && c < 127) ? c : '?';
+    }
+    return fail(
+      "not an OFF file (it starts with \"" + quoted + (keyword.size() > 32 ? "...\")." : "\")."));
   }
   const std::string prefix = keyword.substr(0, keyword.size() - 3);
   if (prefix.find_first_not_of("CN") != std::string::npos)

@@ -1,7 +1,7 @@
 # The install tree is usable on its own: `cmake --install` into a fresh
 # prefix, then build Examples/Cxx against it with find_package(vtkPhong) as
-# any other project would, run that program, and import vtkphong from the
-# prefix with VTK's Python.
+# any other project would, run that program, import vtkphong from the
+# prefix with VTK's Python, and render with the prefix's vtkphong-render.
 #
 #   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DMESH=... -DPYTHON=... -P TestInstallConsumer.cmake
 
@@ -30,7 +30,9 @@ foreach (file IN ITEMS
     "lib/cmake/vtkPhong/vtkPhongConfig.cmake"
     "lib/cmake/vtkPhong/vtkPhong-targets.cmake"
     "include/vtkPhong/vtkPhongPolyDataMapper.h"
-    "${PYTHON_DESTINATION}/vtkphong/__init__.py")
+    "${PYTHON_DESTINATION}/vtkphong/__init__.py"
+    "${PYTHON_DESTINATION}/vtkphong/render.py"
+    "bin/vtkphong-render")
   if (NOT EXISTS "${prefix}/${file}")
     message(FATAL_ERROR "the install tree lacks ${file}")
   endif ()
@@ -48,4 +50,10 @@ run("${CMAKE_COMMAND}" -E env "PYTHONPATH=${prefix}/${PYTHON_DESTINATION}" "${PY
   "import vtkphong, sys; m = vtkphong.vtkPhongPolyDataMapper(); p = vtkphong.vtkPhongProperty(); \
 p.SetShininess(5000.0); assert p.GetShininess() == 5000.0; \
 assert vtkphong.__file__.startswith(sys.argv[1]), vtkphong.__file__; print('python ok')" "${prefix}")
+
+# The installed command finds the installed package (no PYTHONPATH).
+run("${prefix}/bin/vtkphong-render" "${MESH}" -o "${work}/cli.png" --size 160x120 --quiet)
+if (NOT EXISTS "${work}/cli.png")
+  message(FATAL_ERROR "the installed vtkphong-render wrote no image")
+endif ()
 message(STATUS "the install tree at ${prefix} works")

@@ -1,0 +1,344 @@
+"""vtkphong-render, the command-line renderer, as a user runs it: every input
+format (files made here), its .mtl colours and unclamped Ns shininess, PNG and
+EXR output, flags and scene files, debug views, the progress line, --help,
+and every error path (one line on stderr, a non-zero status, never a crash).
+
+    TestPhongRenderCLI.py <build>/bin/vtkphong-render -T <temporary>
+"""
+
+import argparse
+import json
+import os
+import struct
+import subprocess
+
+import vtkphong
+from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkTriangleFilter
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkIOGeometry import vtkSTLWriter
+from vtkmodules.vtkIOLegacy import vtkPolyDataWriter, vtkUnstructuredGridWriter
+from vtkmodules.vtkIOPLY import vtkPLYWriter
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+from vtkphong_testing import Checks
+
+parser = argparse.ArgumentParser()
+parser.add_argument("cli")
+parser.add_argument("-B", dest="baselines")
+parser.add_argument("-T", dest="temporary", required=True)
+args = parser.parse_args()
+checks = Checks()
+folder = os.path.join(args.temporary, "TestPhongRenderCLI")
+os.makedirs(folder, exist_ok=True)
+
+
+def path(name):
+    return os.path.join(folder, name)
+
+
+def run(*arguments, environment=None):
+    # Bytes, decoded here: text mode would turn the progress line's carriage returns into
+    # newlines.
+    result = subprocess.run([args.cli] + [str(a) for a in arguments], capture_output=True,
+                            timeout=300, env=environment)
+    result.stdout = result.stdout.decode("utf-8", "replace")
+    result.stderr = result.stderr.decode("utf-8", "replace")
+    return result
+
+
+def read(image_file):
+    image = vtkImageData()
+    checks.expect(vtkphong.vtkPhongImageIO().ReadImage(image_file, image) == 1,
+                  "read " + image_file)
+    return image
+
+
+def pixels(image):
+    """Rows of (r, g, b[, a]) tuples in [0, 1]."""
+    scalars = image.GetPointData().GetScalars()
+    scale = 255.0 if scalars.GetDataTypeAsString() == "unsigned char" else 1.0
+    count = scalars.GetNumberOfComponents()
+    return [tuple(scalars.GetComponent(i, c) / scale for c in range(count))
+            for i in range(scalars.GetNumberOfTuples())]
+
+
+BACKGROUND = (0.12, 0.12, 0.14)
+
+
+def covered(values):
+    """The pixels that are not the default background."""
+    return [p for p in values if max(abs(p[c] - BACKGROUND[c]) for c in range(3)) > 0.02]
+
+
+# --- input files -----------------------------------------------------------
+
+sphere = vtkSphereSource()
+sphere.SetThetaResolution(48)
+sphere.SetPhiResolution(48)
+triangles = vtkTriangleFilter()
+triangles.SetInputConnection(sphere.GetOutputPort())
+triangles.Update()
+mesh = triangles.GetOutput()
+points = [mesh.GetPoint(i) for i in range(mesh.GetNumberOfPoints())]
+faces = []
+for i in range(mesh.GetNumberOfCells()):
+    ids = mesh.GetCell(i).GetPointIds()
+    faces.append([ids.GetId(k) for k in range(ids.GetNumberOfIds())])
+
+
+def write_obj(name, materials):
+    """A sphere in materials[0] (its upper half only when a second material paints the
+    lower half)."""
+    with open(path(name + ".mtl"), "w") as mtl:
+        for index, (color, shininess) in enumerate(materials):
+            mtl.write("newmtl m%d\nKa 0 0 0\nKd %g %g %g\nKs 1 1 1\nNs %g\nillum 2\n\n"
+                      % ((index,) + tuple(color) + (shininess,)))
+    groups = [faces] if len(materials) == 1 else [
+        [f for f in faces if sum(points[k][2] for k in f) >= 0.0],
+        [f for f in faces if sum(points[k][2] for k in f) < 0.0]]
+    with open(path(name + ".obj"), "w") as obj:
+        obj.write("mtllib %s.mtl\n" % name)
+        for p in points:
+            obj.write("v %.9g %.9g %.9g\n" % p)
+        for index, group in enumerate(groups):
+            obj.write("usemtl m%d\n" % index)
+            for face in group:
+                obj.write("f %s\n" % " ".join(str(k + 1) for k in face))
+    return path(name + ".obj")
+
+
+two_colours = write_obj("halves", [((1, 0, 0), 10), ((0, 0, 1), 1000)])
+dull = write_obj("dull", [((0.6, 0.6, 0.6), 5)])
+sharp = write_obj("sharp", [((0.6, 0.6, 0.6), 2000)])
+sharper_than_vtk = write_obj("ns200", [((0.6, 0.6, 0.6), 200)])
+
+colors = vtkUnsignedCharArray()
+colors.SetName("RGB")
+colors.SetNumberOfComponents(3)
+for i in range(mesh.GetNumberOfPoints()):
+    colors.InsertNextTuple3(30, 200, 60)
+coloured = vtkPolyData()
+coloured.DeepCopy(mesh)
+coloured.GetPointData().SetScalars(colors)
+ply = vtkPLYWriter()
+ply.SetInputData(coloured)
+ply.SetArrayName("RGB")
+ply.SetFileName(path("green.ply"))
+ply.Write()
+
+for mode in ("ascii", "binary"):
+    stl = vtkSTLWriter()
+    stl.SetInputData(mesh)
+    stl.SetFileName(path("sphere-%s.stl" % mode))
+    getattr(stl, "SetFileTypeTo" + ("ASCII" if mode == "ascii" else "Binary"))()
+    stl.Write()
+
+with open(path("sphere.off"), "w") as off:
+    off.write("OFF\n%d %d 0\n" % (len(points), len(faces)))
+    for p in points:
+        off.write("%.9g %.9g %.9g\n" % p)
+    for face in faces:
+        off.write("%d %s\n" % (len(face), " ".join(map(str, face))))
+
+vtp = vtkXMLPolyDataWriter()
+vtp.SetInputData(mesh)
+vtp.SetFileName(path("sphere.vtp"))
+vtp.Write()
+legacy = vtkPolyDataWriter()
+legacy.SetInputData(mesh)
+legacy.SetFileName(path("sphere.vtk"))
+legacy.Write()
+grid = vtkAppendFilter()  # an unstructured grid: the CLI draws its surface
+grid.SetInputData(mesh)
+grid.Update()
+grid_writer = vtkUnstructuredGridWriter()
+grid_writer.SetInputData(grid.GetOutput())
+grid_writer.SetFileName(path("grid.vtk"))
+grid_writer.Write()
+
+# --- every format renders --------------------------------------------------
+
+inputs = [two_colours, path("green.ply"), path("sphere-ascii.stl"), path("sphere-binary.stl"),
+          path("sphere.off"), path("sphere.vtp"), path("sphere.vtk"), path("grid.vtk")]
+for mesh_file in inputs:
+    name = os.path.basename(mesh_file)
+    output = path(name + ".png")
+    result = run(mesh_file, "-o", output, "--size", "160x120")
+    checks.expect(result.returncode == 0, "%s renders (status %d: %s)"
+                  % (name, result.returncode, result.stderr.strip()))
+    checks.expect(result.stdout.strip() == output, "%s: the output path is printed" % name)
+    checks.expect(result.stderr == "", "%s: nothing on stderr (%r)" % (name, result.stderr))
+    if os.path.exists(output):
+        image = read(output)
+        checks.expect(image.GetDimensions()[:2] == (160, 120), "%s: --size 160x120" % name)
+        checks.expect(image.GetNumberOfScalarComponents() == 3, "%s: an RGB PNG" % name)
+        share = len(covered(pixels(image))) / (160.0 * 120.0)
+        checks.expect(0.15 < share < 0.7, "%s: the mesh fills the view (%.2f)" % (name, share))
+
+halves = pixels(read(path("halves.obj.png")))
+checks.expect(any(p[0] > 0.5 and p[2] < 0.2 for p in halves), "the .mtl's red half shows")
+checks.expect(any(p[2] > 0.5 and p[0] < 0.2 for p in halves), "the .mtl's blue half shows")
+greens = covered(pixels(read(path("green.ply.png"))))
+checks.expect(sum(1 for p in greens if p[1] > p[0] and p[1] > p[2]) > 0.9 * len(greens),
+              "the PLY's vertex colours are used")
+
+
+# Ns is honoured unclamped: a highlight of Ns 2000 is smaller than one of Ns 200
+# (VTK's importer clamps both to 128), which is smaller than one of Ns 5.
+def highlight_pixels(obj):
+    output = obj + ".png"
+    run(obj, "-o", output, "--size", "160x120", "--quiet")
+    return sum(1 for p in pixels(read(output)) if min(p[:3]) > 0.75)
+
+
+bright = [highlight_pixels(obj) for obj in (dull, sharper_than_vtk, sharp)]
+checks.expect(bright[0] > bright[1] > bright[2], "Ns 5 > 200 > 2000 in highlight size: %s"
+              % bright)
+
+# --- flags, scene files, outputs ---------------------------------------------
+
+exr = path("emissive.exr")
+result = run(path("sphere.off"), "-o", exr, "--size", "120x90", "--emission", "2,2,2",
+             "--quiet")
+checks.expect(result.returncode == 0 and result.stdout == "", "EXR output, --quiet")
+if os.path.exists(exr):
+    image = read(exr)
+    checks.expect(image.GetScalarType() == 10 and image.GetNumberOfScalarComponents() == 4,
+                  "EXR holds float RGBA")
+    checks.expect(max(p[0] for p in pixels(image)) > 2.0, "EXR keeps values above 1")
+
+scene_file = path("scene.json")
+with open(scene_file, "w") as stream:
+    json.dump({"size": [200, 150], "background": [1, 0, 0], "lobe": "phong",
+               "material": {"color": [0, 0, 1], "specular": 0.0},
+               "camera": {"azimuth": 0, "elevation": 0, "zoom": 0.5},
+               "lights": [{"type": "point", "position": [0, 0, 3], "intensity": 1.5,
+                           "attenuation": [1, 0, 0]},
+                          {"kind": "headlight", "type": "directional", "intensity": 0.2}]},
+              stream)
+output = path("scene.png")
+result = run(two_colours, "-o", output, "--scene", scene_file)
+checks.expect(result.returncode == 0, "a scene file renders (%s)" % result.stderr.strip())
+if os.path.exists(output):
+    image = read(output)
+    values = pixels(image)
+    checks.expect(image.GetDimensions()[:2] == (200, 150), "the scene file's size")
+    checks.expect(values[0][:3] == (1.0, 0.0, 0.0), "the scene file's background")
+    blue = [p for p in values if p[:3] != (1.0, 0.0, 0.0)]
+    checks.expect(blue and all(p[0] < 0.05 and p[1] < 0.05 for p in blue),
+                  "the scene file's colour overrides the .mtl, no highlight (specular 0)")
+    checks.expect(len(blue) < 0.25 * len(values), "the scene file's zoom 0.5")
+result = run(two_colours, "-o", output, "--scene", scene_file, "--size", "64x48",
+             "--background", "0,1,0", "--quiet")
+checks.expect(result.returncode == 0 and read(output).GetDimensions()[:2] == (64, 48)
+              and pixels(read(output))[0][:3] == (0.0, 1.0, 0.0),
+              "flags win over the file (status %d, %r)" % (result.returncode, result.stderr))
+
+output = path("normal.png")
+run(path("sphere.off"), "-o", output, "--size", "120x90", "--debug-view", "normal",
+    "--transparent", "--quiet")
+values = pixels(read(output))
+checks.expect(len(values[0]) == 4 and values[0][3] == 0.0,
+              "--transparent: RGBA, the background transparent")
+checks.expect(any(p[3] > 0 and p[0] > 0.7 and p[2] > 0.7 for p in values)
+              and any(p[3] > 0 and p[1] > 0.7 for p in values),
+              "--debug-view normal shows normals as colours")
+
+output = path("lights.png")
+result = run(path("sphere.off"), "-o", output, "--size", "120x90", "--quiet", "--light",
+             "spot:0,0,3:1,0.5,0:2", "--light", "directional:-1,1,1", "--lobe",
+             "normalized-phong", "--interpolation", "per-vertex-gouraud", "--shininess",
+             "5000", "--color", "0.5,0.5,0.5", "--normals-weighting", "angle",
+             "--feature-angle", "45", "--azimuth", "-40", "--elevation", "10", "--zoom", "1.2")
+checks.expect(result.returncode == 0, "every flag at once (%s)" % result.stderr.strip())
+
+# --- progress, help ------------------------------------------------------------
+
+big = vtkSphereSource()
+big.SetThetaResolution(340)
+big.SetPhiResolution(340)
+big_writer = vtkSTLWriter()
+big_writer.SetInputConnection(big.GetOutputPort())
+big_writer.SetFileTypeToBinary()
+big_writer.SetFileName(path("big.stl"))
+big_writer.Write()
+result = run(path("big.stl"), "-o", path("big.png"), "--size", "120x90")
+checks.expect(result.returncode == 0 and "reading" in result.stderr and "%" in result.stderr
+              and "computing normals" in result.stderr,
+              "a progress line for a big mesh: %r" % result.stderr[-200:])
+checks.expect(result.stderr.endswith("\n") and result.stderr.count("\n") == 1,
+              "the progress line is one line, rewritten with carriage returns")
+
+result = run("--help")
+checks.expect(result.returncode == 0, "--help succeeds")
+for option in ("--output", "--scene", "--size", "--background", "--transparent", "--lobe",
+               "--interpolation", "--color", "--ambient", "--diffuse", "--specular",
+               "--shininess", "--emission", "--light", "--azimuth", "--elevation", "--zoom",
+               "--debug-view", "--debug-light", "--normals-weighting", "--feature-angle",
+               "--quiet", "scene file", "exit status", ".obj", ".exr", "headlight"):
+    checks.expect(option in result.stdout, "--help documents " + option)
+
+# --- errors: one line, a non-zero status, no crash ------------------------------
+
+garbage = os.urandom(3000)
+for extension in ("stl", "ply", "obj", "off", "vtp", "vtk"):
+    with open(path("garbage." + extension), "wb") as stream:
+        stream.write(garbage)
+with open(path("bad-syntax.json"), "w") as stream:
+    stream.write("{oops")
+with open(path("bad-value.json"), "w") as stream:
+    json.dump({"material": {"shininess": -3}}, stream)
+with open(path("bad-key.json"), "w") as stream:
+    json.dump({"lights": [{"type": "laser", "position": [0, 0, 1]}]}, stream)
+with open(path("missing-mtl.obj"), "w") as stream:
+    stream.write("mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n")
+with open(path("truncated.stl"), "wb") as stream:
+    stream.write(b"\0" * 80 + struct.pack("<I", 1000) + b"\0" * 500)
+
+good = path("sphere.off")
+out = path("error.png")
+cases = [
+    ((path("nothing.off"), "-o", out), 1, "no such file"),
+    ((path("sphere.xyz"), "-o", out), 1, "unknown extension"),
+    ((path("truncated.stl"), "-o", out), 1, "not an STL file"),
+    ((good, "-o", path("image.jpg")), 2, ".png or .exr"),
+    ((good, "-o", path("no-such-folder/image.png")), 1, "no directory"),
+    ((good,), 2, "-o"),
+    ((good, "-o", out, "--bogus"), 2, "--bogus"),
+    ((good, "-o", out, "--size", "0x10"), 2, "--size"),
+    ((good, "-o", out, "--size", "big"), 2, "--size"),
+    ((good, "-o", out, "--color", "1,2"), 2, "colour"),
+    ((good, "-o", out, "--color", "nan,0,0"), 2, "finite"),
+    ((good, "-o", out, "--specular", "2"), 2, "--specular"),
+    ((good, "-o", out, "--light", "laser:1,1,1"), 2, "--light"),
+    ((good, "-o", out, "--lobe", "cook-torrance"), 2, "--lobe"),
+    ((good, "-o", out, "--debug-view", "depth"), 2, "--debug-view"),
+    ((good, "-o", out, "--scene", path("nothing.json")), 2, "scene file"),
+    ((good, "-o", out, "--scene", path("bad-syntax.json")), 2, "not valid JSON"),
+    ((good, "-o", out, "--scene", path("bad-value.json")), 2, "material.shininess"),
+    ((good, "-o", out, "--scene", path("bad-key.json")), 2, "lights[0].type"),
+] + [((path("garbage." + e), "-o", out), 1, "garbage." + e)
+     for e in ("stl", "ply", "obj", "off", "vtp", "vtk")]
+for arguments, status, words in cases:
+    result = run(*arguments)
+    label = " ".join(os.path.basename(str(a)) for a in arguments)
+    lines = result.stderr.splitlines()
+    checks.expect(result.returncode == status,
+                  "%s: status %d (got %d)" % (label, status, result.returncode))
+    checks.expect(len(lines) == 1 and lines[0].startswith("vtkphong-render: error: ")
+                  and words in lines[0], "%s: one error line naming %r, got %r"
+                  % (label, words, result.stderr))
+
+environment = dict(os.environ)
+environment.pop("DISPLAY", None)
+result = run(good, "-o", out, environment=environment)
+checks.expect(result.returncode == 1 and "X display" in result.stderr,
+              "no display: one error line (%r)" % result.stderr)
+
+result = run(path("missing-mtl.obj"), "-o", path("missing-mtl.png"), "--quiet")
+checks.expect(result.returncode == 0 and result.stderr.startswith("vtkphong-render: warning: ")
+              and "nowhere.mtl" in result.stderr and result.stderr.count("\n") == 1,
+              "a missing .mtl: one warning, the default material (%r)" % result.stderr)
+
+checks.exit()
