@@ -166,6 +166,7 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
   vtkPhongShaderBuilder::Options options;
   options.DebugView = this->DebugView;
   options.DebugLightIndex = this->DebugLightIndex;
+  options.Specialize = this->ShaderSpecialization;
 
   vtkPhongShaderBuilder::Plan plan = this->Internal->Builder->MakePlan(ren, act, state, options);
   if (plan.Handled && this->Internal->FailedSignatures.count(plan.Signature))
@@ -350,6 +351,7 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalsFeatureAngle: " << this->NormalsFeatureAngle << "\n";
   os << indent << "NormalsSplitting: " << (this->NormalsSplitting ? "On" : "Off") << "\n";
   os << indent << "UsedGeneratedNormals: " << (this->UsedGeneratedNormals ? "yes" : "no") << "\n";
+  os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
   os << indent << "ShaderCompileCount: " << this->ShaderCompileCount << "\n";
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";
   os << indent << "LastShaderBuildTime: " << this->LastShaderBuildTime << "\n";
@@ -372,6 +374,7 @@ void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
     this->SetNormalsWeighting(phong->GetNormalsWeighting());
     this->SetNormalsFeatureAngle(phong->GetNormalsFeatureAngle());
     this->SetNormalsSplitting(phong->GetNormalsSplitting());
+    this->SetShaderSpecialization(phong->GetShaderSpecialization());
   }
   this->Superclass::ShallowCopy(mapper);
 }

@@ -143,6 +143,20 @@ public:
 
   ///@{
   /**
+   * Shader specialization. On (the default), the generated shader holds only what the scene
+   * needs (docs/shaders.md). Off, the mapper builds the all-features variant instead: every
+   * optional term (ambient, diffuse, specular, emission, the ambient light of positional
+   * lights, distance attenuation, spot falloff and soft edges, the normal fallback) and a
+   * loop for every light kind, lights the scene lacks standing in with zero intensity. It
+   * draws the same picture, more slowly: it exists to measure what specialization buys.
+   */
+  vtkSetMacro(ShaderSpecialization, bool);
+  vtkGetMacro(ShaderSpecialization, bool);
+  vtkBooleanMacro(ShaderSpecialization, bool);
+  ///@}
+
+  ///@{
+  /**
    * Shader statistics since the mapper was created (or last released its graphics resources).
    * ShaderCompileCount: how many times the mapper asked the render window for a program
    * whose source it had not used before; each costs a compile and link unless another mapper
@@ -199,6 +213,7 @@ protected:
   double NormalsFeatureAngle = 30.0;
   bool NormalsSplitting = true;
   bool UsedGeneratedNormals = false;
+  bool ShaderSpecialization = true;
 
   int ShaderCompileCount = 0;
   double LastShaderBuildTime = 0.0;

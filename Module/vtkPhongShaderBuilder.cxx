@@ -75,6 +75,35 @@ bool IsPositive(double value)
   return value > 0.0; // false for NaN too
 }
 
+// The value a light parameter is uploaded with: finite and >= 0, else 0 (the
+// problem is reported where the value is uploaded).
+double Sanitized(double value)
+{
+  return (value >= 0.0 && std::isfinite(value)) ? value : 0.0;
+}
+
+// Whether a light adds ambient light: its ambient colour times its intensity is not black.
+bool HasAmbientLight(vtkLight* light)
+{
+  const double* color = light->GetAmbientColor();
+  return IsPositive(Sanitized(light->GetIntensity())) &&
+    (IsPositive(Sanitized(color[0])) || IsPositive(Sanitized(color[1])) ||
+      IsPositive(Sanitized(color[2])));
+}
+
+// Whether a positional light fades with distance: (c, l, q) is not (1, 0, 0).
+bool IsAttenuated(vtkLight* light)
+{
+  const double* values = light->GetAttenuationValues();
+  return Sanitized(values[0]) != 1.0 || Sanitized(values[1]) != 0.0 || Sanitized(values[2]) != 0.0;
+}
+
+// Whether a spot's light falls off inside its cone: its exponent is not 1.
+bool HasSpotFalloff(vtkLight* light)
+{
+  return Sanitized(light->GetExponent()) != 1.0;
+}
+
 // Strip leading blanks, for matching template directives.
 std::string TrimLeft(const std::string& line)
 {
@@ -84,7 +113,20 @@ std::string TrimLeft(const std::string& line)
 }
 
 //------------------------------------------------------------------------------
-vtkPhongShaderBuilder::vtkPhongShaderBuilder() = default;
+vtkPhongShaderBuilder::vtkPhongShaderBuilder()
+{
+  this->PlaceholderDirectional->SetIntensity(0.0);
+  this->PlaceholderPoint->SetIntensity(0.0);
+  this->PlaceholderPoint->PositionalOn();
+  this->PlaceholderPoint->SetConeAngle(180.0);
+  this->PlaceholderSpot->SetIntensity(0.0);
+  this->PlaceholderSpot->PositionalOn();
+  this->PlaceholderSpot->SetConeAngle(45.0);
+  this->PlaceholderSpot->SetExponent(2.0);
+  this->PlaceholderSpot->SetAttenuationValues(1.0, 0.1, 0.1);
+  this->PlaceholderPoint->SetAttenuationValues(1.0, 0.1, 0.1);
+  this->PlaceholderPoint->SetAmbientColor(1.0, 1.0, 1.0);
+}
 
 //------------------------------------------------------------------------------
 vtkPhongShaderBuilder::~vtkPhongShaderBuilder() = default;
@@ -204,16 +246,40 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   const bool haveLights = !switchedOn.empty();
 
   auto& flags = plan.Flags;
+  // The all-features variant keeps every optional term and needs a light of each kind: the
+  // kinds the scene lacks get a placeholder that adds nothing.
+  const bool all = !options.Specialize;
+  if (all)
+  {
+    if (plan.DirectionalLights.empty())
+    {
+      plan.DirectionalLights.push_back(this->PlaceholderDirectional);
+    }
+    if (plan.PointLights.empty())
+    {
+      plan.PointLights.push_back(this->PlaceholderPoint);
+    }
+    if (plan.SpotLights.empty())
+    {
+      plan.SpotLights.push_back(this->PlaceholderSpot);
+    }
+  }
   const bool ambient =
-    wantAmbient && (IsPositive(front->GetAmbient()) || IsPositive(back->GetAmbient()));
-  const bool diffuse = wantDiffuse && haveLights &&
-    (IsPositive(front->GetDiffuse()) || IsPositive(back->GetDiffuse()));
-  const bool specular = wantSpecular && haveLights &&
-    (IsPositive(front->GetSpecular()) || IsPositive(back->GetSpecular()));
-  const bool emission =
-    wantEmission && (vtkPhongProperty::SafeDownCast(front) || vtkPhongProperty::SafeDownCast(back));
+    wantAmbient && (all || IsPositive(front->GetAmbient()) || IsPositive(back->GetAmbient()));
+  const bool diffuse = wantDiffuse && (haveLights || all) &&
+    (all || IsPositive(front->GetDiffuse()) || IsPositive(back->GetDiffuse()));
+  const bool specular = wantSpecular && (haveLights || all) &&
+    (all || IsPositive(front->GetSpecular()) || IsPositive(back->GetSpecular()));
+  const bool emission = wantEmission &&
+    (all || vtkPhongProperty::SafeDownCast(front) || vtkPhongProperty::SafeDownCast(back));
   const bool positional = !plan.PointLights.empty() || !plan.SpotLights.empty();
-  const bool positionalAmbient = ambient && positional;
+  // Light values that are zero have no code, as a zero material coefficient has none: the
+  // ambient light of positional lights that give none, the distance attenuation of lights
+  // with (c, l, q) = (1, 0, 0), the falloff of spots with exponent 1.
+  auto any = [](const std::vector<vtkLight*>& lights, bool (*test)(vtkLight*))
+  { return std::any_of(lights.begin(), lights.end(), test); };
+  const bool positionalAmbient = ambient && positional &&
+    (all || any(plan.PointLights, HasAmbientLight) || any(plan.SpotLights, HasAmbientLight));
   const bool lightSums = diffuse || specular || positionalAmbient;
 
   auto set = [&flags](const char* flag, bool on)
@@ -234,6 +300,13 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   set("POINT", lightSums && !plan.PointLights.empty());
   set("SPOT", lightSums && !plan.SpotLights.empty());
   set("POSITIONAL", lightSums && positional);
+  const bool pointAttenuation =
+    flags.count("POINT") && (all || any(plan.PointLights, IsAttenuated));
+  const bool spotAttenuation = flags.count("SPOT") && (all || any(plan.SpotLights, IsAttenuated));
+  set("POINT_ATTENUATION", pointAttenuation);
+  set("SPOT_ATTENUATION", spotAttenuation);
+  set("ATTENUATION", pointAttenuation || spotAttenuation);
+  set("SPOT_FALLOFF", flags.count("SPOT") && (all || any(plan.SpotLights, HasSpotFalloff)));
 
   auto* phongFront = vtkPhongProperty::SafeDownCast(front);
   if (specular)
@@ -245,7 +318,8 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
     set("LOBE_PHONG", !blinn);
     set("SMOOTH_TERMINATOR", phongFront && phongFront->GetSmoothTerminator());
   }
-  set("SOFT_SPOT_EDGE", flags.count("SPOT") && phongFront && phongFront->GetSoftSpotEdge());
+  set("SOFT_SPOT_EDGE",
+    flags.count("SPOT") && (all || (phongFront && phongFront->GetSoftSpotEdge())));
 
   vtkCamera* camera = ren->GetActiveCamera();
   set("PARALLEL", camera && camera->GetParallelProjection());
@@ -271,7 +345,7 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   // from screen-space derivatives, which cost every fragment: only when the
   // mapper found such normals. Otherwise a cheap guard covers normals that
   // cancel out when interpolated.
-  const bool normalFallback = shadingNormal && state.NormalsMayBeInvalid &&
+  const bool normalFallback = shadingNormal && (state.NormalsMayBeInvalid || all) &&
     (state.HasPointNormals || state.HasCellNormals) && !state.NormalsFromShape;
   set("NORMAL_FALLBACK", normalFallback);
   set("VIEW_VECTOR", shadingNormal);
@@ -283,7 +357,8 @@ vtkPhongShaderBuilder::Plan vtkPhongShaderBuilder::MakePlan(
   }
   signature << "| directional " << (flags.count("DIRECTIONAL") ? plan.DirectionalLights.size() : 0)
             << " point " << (flags.count("POINT") ? plan.PointLights.size() : 0) << " spot "
-            << (flags.count("SPOT") ? plan.SpotLights.size() : 0) << " | view " << view;
+            << (flags.count("SPOT") ? plan.SpotLights.size() : 0) << " | view " << view
+            << (all ? " | all features" : "");
   plan.Signature = signature.str();
   return plan;
 }
@@ -676,7 +751,10 @@ void vtkPhongShaderBuilder::SetLightUniforms(
     diffuse.clear();
     specular.clear();
     auto* phongFront = vtkPhongProperty::SafeDownCast(plan.FrontMaterial);
-    const double edgeWidth = phongFront ? phongFront->GetSpotEdgeWidth() : 0.0;
+    // Without the soft edge option the band has no width (a hard edge), also in the
+    // all-features variant, which evaluates the smoothstep anyway.
+    const double edgeWidth =
+      (phongFront && phongFront->GetSoftSpotEdge()) ? phongFront->GetSpotEdgeWidth() : 0.0;
     for (vtkLight* light : kindLights)
     {
       const LightValues values = valuesOf(light, lightIndex[light]);
@@ -699,7 +777,14 @@ void vtkPhongShaderBuilder::SetLightUniforms(
         AppendRGB(axis, geometry.DirectionVC);
         const double cone = std::max(light->GetConeAngle(), 0.0);
         cosCutoff.push_back(static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone))));
-        exponent.push_back(static_cast<float>(light->GetExponent()));
+        if (!(light->GetExponent() >= 0.0) || !std::isfinite(light->GetExponent()))
+        {
+          std::ostringstream problem;
+          problem << "Spot light " << lightIndex[light] << " has exponent " << light->GetExponent()
+                  << "; spot exponents must be finite and >= 0, so it is treated as 0.";
+          this->AddProblem(problem.str());
+        }
+        exponent.push_back(static_cast<float>(Sanitized(light->GetExponent())));
         // smoothstep needs its two edges apart; a zero-width band is a hard edge.
         const double inner = std::cos(vtkMath::RadiansFromDegrees(std::max(cone - edgeWidth, 0.0)));
         cosInner.push_back(static_cast<float>(std::max(inner, cosCutoff.back() + 1.0e-6)));
@@ -707,7 +792,10 @@ void vtkPhongShaderBuilder::SetLightUniforms(
     }
     const std::string name(prefix);
     SetVec3Array(program, (name + "PositionVC").c_str(), position);
-    SetVec3Array(program, (name + "Attenuation").c_str(), attenuation);
+    if (plan.Has(isSpot ? "SPOT_ATTENUATION" : "POINT_ATTENUATION"))
+    {
+      SetVec3Array(program, (name + "Attenuation").c_str(), attenuation);
+    }
     if (plan.Has("POSITIONAL_AMBIENT"))
     {
       SetVec3Array(program, (name + "Ambient").c_str(), ambient);
@@ -725,7 +813,10 @@ void vtkPhongShaderBuilder::SetLightUniforms(
       const int count = static_cast<int>(cosCutoff.size());
       SetVec3Array(program, (name + "AxisVC").c_str(), axis);
       program->SetUniform1fv((name + "CosCutoff").c_str(), count, cosCutoff.data());
-      program->SetUniform1fv((name + "Exponent").c_str(), count, exponent.data());
+      if (plan.Has("SPOT_FALLOFF"))
+      {
+        program->SetUniform1fv((name + "Exponent").c_str(), count, exponent.data());
+      }
       if (plan.Has("SOFT_SPOT_EDGE"))
       {
         program->SetUniform1fv((name + "CosInner").c_str(), count, cosInner.data());

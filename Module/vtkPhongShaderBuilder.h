@@ -27,6 +27,8 @@
 #ifndef vtkPhongShaderBuilder_h
 #define vtkPhongShaderBuilder_h
 
+#include "vtkLight.h" // for vtkNew<vtkLight>
+#include "vtkNew.h"   // for vtkNew
 #include "vtkObject.h"
 #include "vtkRenderingPhongModule.h" // for export macro
 #include "vtkShader.h"               // for vtkShader::Type
@@ -37,7 +39,6 @@
 #include <vector> // for std::vector
 
 class vtkActor;
-class vtkLight;
 class vtkProperty;
 class vtkRenderer;
 class vtkShaderProgram;
@@ -73,6 +74,9 @@ public:
   {
     int DebugView = 0; ///< a vtkPhongPolyDataMapper::DebugViews value
     int DebugLightIndex = 0;
+    /// false: the all-features variant (every optional term and light kind) instead of the
+    /// shader the scene needs, for measuring what specialization buys
+    bool Specialize = true;
   };
 
   /**
@@ -141,6 +145,12 @@ protected:
 
   void AddProblem(const std::string& problem);
   std::set<std::string> Problems;
+
+  // Lights that contribute nothing (intensity 0), standing in for the light kinds a scene
+  // lacks in the all-features variant, whose code needs at least one light of each kind.
+  vtkNew<vtkLight> PlaceholderDirectional;
+  vtkNew<vtkLight> PlaceholderPoint;
+  vtkNew<vtkLight> PlaceholderSpot;
 
 private:
   vtkPhongShaderBuilder(const vtkPhongShaderBuilder&) = delete;

@@ -421,7 +421,7 @@ bool vtkPhongReference::PrepareScene(int width, int height)
       const double cone = std::max(light->GetConeAngle(), 0.0);
       reference.CosCutoff = std::cos(glm::radians(cone));
       reference.CosInner = std::cos(glm::radians(std::max(cone - spotEdgeWidth, 0.0)));
-      reference.Exponent = light->GetExponent();
+      reference.Exponent = FiniteNonNegative(light->GetExponent());
     }
     const double intensity = FiniteNonNegative(light->GetIntensity());
     reference.Ambient = intensity * FiniteNonNegativeColor(light->GetAmbientColor());

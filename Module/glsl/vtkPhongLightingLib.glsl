@@ -48,7 +48,9 @@ uniform vec3 phongDirectionalLightSpecular[@DIRECTIONAL_COUNT@]; // Ls_i*I_i
 //PHONG_IF POINT
 const int phongPointLightCount = @POINT_COUNT@;
 uniform vec3 phongPointLightPositionVC[@POINT_COUNT@];
+//PHONG_IF POINT_ATTENUATION
 uniform vec3 phongPointLightAttenuation[@POINT_COUNT@]; // (c, l, q)
+//PHONG_ENDIF
 //PHONG_IF POSITIONAL_AMBIENT
 uniform vec3 phongPointLightAmbient[@POINT_COUNT@]; // La_i*I_i
 //PHONG_ENDIF
@@ -63,10 +65,14 @@ uniform vec3 phongPointLightSpecular[@POINT_COUNT@];
 //PHONG_IF SPOT
 const int phongSpotLightCount = @SPOT_COUNT@;
 uniform vec3 phongSpotLightPositionVC[@SPOT_COUNT@];
+//PHONG_IF SPOT_ATTENUATION
 uniform vec3 phongSpotLightAttenuation[@SPOT_COUNT@]; // (c, l, q)
+//PHONG_ENDIF
 uniform vec3 phongSpotLightAxisVC[@SPOT_COUNT@]; // unit, from the light to its focal point
 uniform float phongSpotLightCosCutoff[@SPOT_COUNT@]; // cos(cone angle)
+//PHONG_IF SPOT_FALLOFF
 uniform float phongSpotLightExponent[@SPOT_COUNT@];
+//PHONG_ENDIF
 //PHONG_IF SOFT_SPOT_EDGE
 uniform float phongSpotLightCosInner[@SPOT_COUNT@]; // cos(cone angle - edge width)
 //PHONG_ENDIF
@@ -81,14 +87,17 @@ uniform vec3 phongSpotLightSpecular[@SPOT_COUNT@];
 //PHONG_ENDIF
 //PHONG_ENDIF
 
-//PHONG_IF POSITIONAL
+//PHONG_IF ATTENUATION
 // Distance attenuation 1/(c + l*d + q*d^2). The denominator is kept above
 // 1e-20 so a light on the surface, or coefficients that vanish, stay finite.
+// Lights with (c, l, q) = (1, 0, 0), VTK's default, need none of it.
 float phongDistanceAttenuation(vec3 coefficients, float d)
 {
   return 1.0 / max(coefficients.x + d * (coefficients.y + d * coefficients.z), 1.0e-20);
 }
+//PHONG_ENDIF
 
+//PHONG_IF POSITIONAL
 // Unit vector from the surface point to a positional light, and the distance.
 // A light exactly at the point has no direction; it lights the point head-on.
 vec3 phongToPositionalLight(vec3 lightPositionVC, vec3 positionVC, vec3 N, out float d)
@@ -164,7 +173,12 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
   {
     float d;
     vec3 L = phongToPositionalLight(phongPointLightPositionVC[i], positionVC, N, d);
+//PHONG_IF POINT_ATTENUATION
     float A = phongDistanceAttenuation(phongPointLightAttenuation[i], d);
+//PHONG_ENDIF
+//PHONG_IF !POINT_ATTENUATION
+    const float A = 1.0;
+//PHONG_ENDIF
     float NdotL = dot(N, L);
 //PHONG_IF POSITIONAL_AMBIENT
     sums.ambient += A * phongPointLightAmbient[i];
@@ -185,11 +199,22 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
     vec3 L = phongToPositionalLight(phongSpotLightPositionVC[i], positionVC, N, d);
     // cos_phi: between the spot axis and the direction from the light to the point
     float cosPhi = dot(-L, phongSpotLightAxisVC[i]);
+//PHONG_IF SPOT_FALLOFF
     float spot = cosPhi >= phongSpotLightCosCutoff[i] ? pow(max(cosPhi, 0.0), phongSpotLightExponent[i]) : 0.0;
+//PHONG_ENDIF
+//PHONG_IF !SPOT_FALLOFF
+    // exponent 1 (VTK's default); inside a cone below 90 degrees cos_phi > 0
+    float spot = cosPhi >= phongSpotLightCosCutoff[i] ? cosPhi : 0.0;
+//PHONG_ENDIF
 //PHONG_IF SOFT_SPOT_EDGE
     spot *= smoothstep(phongSpotLightCosCutoff[i], phongSpotLightCosInner[i], cosPhi);
 //PHONG_ENDIF
+//PHONG_IF SPOT_ATTENUATION
     float A = spot * phongDistanceAttenuation(phongSpotLightAttenuation[i], d);
+//PHONG_ENDIF
+//PHONG_IF !SPOT_ATTENUATION
+    float A = spot;
+//PHONG_ENDIF
     float NdotL = dot(N, L);
 //PHONG_IF POSITIONAL_AMBIENT
     sums.ambient += A * phongSpotLightAmbient[i];

@@ -1,8 +1,11 @@
 // The generated shader contains only what the scene needs: no specular code
-// when ks = 0, no attenuation code without positional lights, no spot code
-// without spots, no emission without a vtkPhongProperty, per-vertex lighting in
-// the vertex shader only, and no template directive left over. Also resolves
-// every template section under many flag combinations without an error.
+// when ks = 0, no attenuation code without positional lights or for lights with
+// VTK's (1, 0, 0), no positional ambient code for lights without ambient
+// colour, no spot code without spots and no falloff code for exponent 1, no
+// emission without a vtkPhongProperty, per-vertex lighting in the vertex shader
+// only, and no template directive left over. The all-features variant holds
+// everything and draws the same picture. Also resolves every template section
+// under many flag combinations without an error.
 
 #include "vtkPhongTestUtilities.h"
 
@@ -56,15 +59,26 @@ int TestPhongShaderSpecialization(int, char*[])
   vtkLight* point = vtkPhongTest::AddLight(scene, key, origin, white, true);
   point->SetConeAngle(180.0);
   fs = render();
-  checks.Expect(Has(fs, "phongDistanceAttenuation") && Has(fs, "phongPointLightPositionVC"),
-    "attenuation code with a point light");
+  checks.Expect(Has(fs, "phongPointLightPositionVC") && !Has(fs, "phongDistanceAttenuation"),
+    "point light code, no attenuation code for (c, l, q) = (1, 0, 0)");
+  checks.Expect(!Has(fs, "phongPointLightAmbient"), "no ambient code for a black ambient colour");
   checks.Expect(!Has(fs, "phongSpotLight"), "no spot code without spots");
+  point->SetAttenuationValues(1.0, 0.5, 0.0);
+  point->SetAmbientColor(0.2, 0.2, 0.2);
+  fs = render();
+  checks.Expect(Has(fs, "phongDistanceAttenuation(phongPointLightAttenuation"),
+    "attenuation code for an attenuated point light");
+  checks.Expect(Has(fs, "phongPointLightAmbient"), "ambient code for a light's ambient colour");
 
   point->SetConeAngle(30.0);
   fs = render();
   checks.Expect(Has(fs, "phongSpotLightCosCutoff") && !Has(fs, "phongPointLightPositionVC"),
     "the light is now a spot: spot code only");
   checks.Expect(!Has(fs, "smoothstep"), "no soft edge code unless asked");
+  checks.Expect(!Has(fs, "phongSpotLightExponent"), "no falloff code for exponent 1");
+  point->SetExponent(3.0);
+  fs = render();
+  checks.Expect(Has(fs, "pow(max(cosPhi, 0.0), phongSpotLightExponent"), "falloff code");
 
   vtkNew<vtkPhongProperty> material;
   material->SetSpecular(0.4);
@@ -94,6 +108,42 @@ int TestPhongShaderSpecialization(int, char*[])
   fs = render();
   checks.Expect(!Has(fs, "phongSumLights") && Has(fs, "0.5 * phongNormalVC + 0.5"),
     "the normal view has no light code");
+  mapper->SetDebugViewToFinal();
+
+  // The all-features variant: everything, whatever the scene, and the same picture.
+  {
+    vtkPhongTest::Scene view(96, 96);
+    view.Renderer->AutomaticLightCreationOff();
+    vtkPhongTest::AddLight(view, key, origin, white, false);
+    vtkNew<vtkProperty> shiny;
+    shiny->SetSpecular(0.5);
+    shiny->SetSpecularPower(20.0);
+    shiny->SetAmbient(0.1);
+    vtkActor* ball = vtkPhongTest::AddActor(view, vtkPhongTest::MakeSphere(48), shiny);
+    auto* ballMapper = vtkPhongPolyDataMapper::SafeDownCast(ball->GetMapper());
+    view.LookFromZ(2.5);
+    view.Window->Render();
+    const std::string specialized = ballMapper->GetLastFragmentShaderSource();
+    auto picture = vtkPhongTest::Snapshot(view.Window);
+    ballMapper->ShaderSpecializationOff();
+    view.Window->Render();
+    const std::string everything = ballMapper->GetLastFragmentShaderSource();
+    for (const char* part : { "phongPointLightPositionVC", "phongSpotLightCosCutoff",
+           "phongDistanceAttenuation", "phongSpotLightExponent", "smoothstep",
+           "phongPointLightAmbient", "phongEmission", "dFdx(vertexVC" })
+    {
+      checks.Expect(!Has(specialized, part) && Has(everything, part),
+        std::string("the all-features variant alone has ") + part);
+    }
+    checks.Expect(
+      std::string(ballMapper->GetLastShaderSignature()).find("all features") != std::string::npos,
+      "the all-features signature says so");
+    const int difference =
+      vtkPhongTest::MaxDifference(picture, vtkPhongTest::Snapshot(view.Window));
+    checks.Expect(difference <= 1,
+      "the all-features variant draws the same picture (" + std::to_string(difference) +
+        " levels)");
+  }
 
   // Every section of every template resolves cleanly under flag sets that
   // switch each conditional both ways.
@@ -105,7 +155,8 @@ int TestPhongShaderSpecialization(int, char*[])
     { "AMBIENT", "DIFFUSE", "SPECULAR", "DIFFUSE_OR_SPECULAR", "EMISSION", "POSITIONAL_AMBIENT",
       "LIGHT_SUMS", "DIRECTIONAL", "POINT", "SPOT", "POSITIONAL", "LOBE_PHONG", "SMOOTH_TERMINATOR",
       "SOFT_SPOT_EDGE", "PARALLEL", "PER_VERTEX", "SUMS_PER_VERTEX", "TWO_SIDED", "BACK_MATERIAL",
-      "SHADING_NORMAL", "NORMAL_FALLBACK", "VIEW_VECTOR", "DEBUG_NORMAL" },
+      "SHADING_NORMAL", "NORMAL_FALLBACK", "VIEW_VECTOR", "DEBUG_NORMAL", "POINT_ATTENUATION",
+      "SPOT_ATTENUATION", "ATTENUATION", "SPOT_FALLOFF", "DEBUG_NORMAL_VC", "DEBUG_POSITION_VC" },
     { "DIFFUSE", "LIGHT_SUMS", "DIRECTIONAL", "SUMS_PER_FRAGMENT", "SHADING_NORMAL", "ONE_SIDED",
       "VIEW_VECTOR", "LOBE_BLINN", "SPECULAR" },
   };

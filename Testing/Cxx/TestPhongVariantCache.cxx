@@ -1,7 +1,8 @@
 // Changing a value (colour, intensity, light position, shininess, camera)
 // updates uniforms and never builds a shader; changing the structure (a term
-// switched on or off, a new light kind, the lobe) builds exactly one variant,
-// and going back to a structure seen before builds nothing.
+// switched on or off, a new light kind, the lobe, a light's attenuation leaving
+// VTK's (1, 0, 0)) builds exactly one variant, and going back to a structure
+// seen before builds nothing.
 
 #include "vtkPhongTestUtilities.h"
 
@@ -62,20 +63,25 @@ int TestPhongVariantCache(int, char*[])
   checks.Expect(mapper->GetShaderCompileCount() == compiles, "moving the camera builds no shader");
 
   // Structure changes: one new variant each, and none when coming back.
+  vtkLight* point = nullptr;
   const std::pair<const char*, std::function<void()>> structureChanges[] = {
     { "specular off", [&] { material->SetSpecular(0.0); } },
     { "specular on again", [&] { material->SetSpecular(0.5); } },
     { "a point light",
       [&]
       {
-        vtkLight* point = vtkPhongTest::AddLight(scene, key, origin, white, true);
+        point = vtkPhongTest::AddLight(scene, key, origin, white, true);
         point->SetConeAngle(180.0);
       } },
     { "Blinn-Phong lobe", [&] { material->SetLightingModelToBlinnPhong(); } },
     { "Phong lobe again", [&] { material->SetLightingModelToPhong(); } },
+    // A light parameter leaving its neutral value adds a term, as a coefficient leaving 0.
+    { "the point light's attenuation leaves (1, 0, 0)",
+      [&] { point->SetAttenuationValues(1.0, 0.3, 0.0); } },
+    { "another attenuation: a value", [&] { point->SetAttenuationValues(1.0, 0.0, 0.4); } },
   };
-  const int expectedNew[] = { 1, 0, 1, 1, 0 };
-  for (int i = 0; i < 5; ++i)
+  const int expectedNew[] = { 1, 0, 1, 1, 0, 1, 0 };
+  for (int i = 0; i < 7; ++i)
   {
     const int count = mapper->GetShaderCompileCount();
     structureChanges[i].second();
@@ -85,8 +91,8 @@ int TestPhongVariantCache(int, char*[])
       std::string(structureChanges[i].first) + " builds " + std::to_string(expectedNew[i]) +
         " shader(s), built " + std::to_string(built));
   }
-  checks.Expect(mapper->GetNumberOfShaderVariants() == 4,
-    "four distinct variants: " + std::to_string(mapper->GetNumberOfShaderVariants()));
+  checks.Expect(mapper->GetNumberOfShaderVariants() == 5,
+    "five distinct variants: " + std::to_string(mapper->GetNumberOfShaderVariants()));
   checks.Expect(mapper->GetLastShaderBuildTime() > 0.0, "the build time is measured");
   checks.Expect(vtkPhongTest::NoGLErrors(scene.Window, "the variant changes"), "no GL error");
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
