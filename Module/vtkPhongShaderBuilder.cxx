@@ -477,8 +477,39 @@ const char* vtkPhongShaderBuilder::GetTemplate(const char* name)
 
 //------------------------------------------------------------------------------
 void vtkPhongShaderBuilder::ReplaceShaderValues(
-  std::map<vtkShader::Type, vtkShader*> shaders, const Plan& plan)
+  std::map<vtkShader::Type, vtkShader*> shaders, const Plan& givenPlan)
 {
+  // When VTK's Color::Impl (already substituted) takes every material colour from its
+  // uniforms, the lighting code uses ready-made products instead (MATERIAL_UNIFORMS in
+  // vtkPhongFS.glsl). Whatever changes VTK's colour code (mapped scalars, a back-face
+  // property) makes VTK rebuild the shader, and this is decided again.
+  Plan plan = givenPlan;
+  {
+    // Uniform colours, assigned once: VTK's edges, back faces and lighting-map passes
+    // (substituted before the lighting) reassign them, and then the variables must be read.
+    const std::string colorCode = shaders[vtkShader::Fragment]->GetSource();
+    auto assignedOnceAs = [&colorCode](const char* variable, const char* definition)
+    {
+      size_t count = 0;
+      const std::string assignment = std::string(variable) + " =";
+      for (size_t at = colorCode.find(assignment); at != std::string::npos;
+           at = colorCode.find(assignment, at + 1))
+      {
+        ++count;
+      }
+      return count == 1 && colorCode.find(definition) != std::string::npos;
+    };
+    const bool uniformColors = assignedOnceAs("ambientColor",
+                                 "vec3 ambientColor = ambientIntensity * ambientColorUniform;") &&
+      assignedOnceAs(
+        "diffuseColor", "vec3 diffuseColor = diffuseIntensity * diffuseColorUniform;") &&
+      assignedOnceAs(
+        "specularColor", "vec3 specularColor = specularIntensity * specularColorUniform;");
+    if (uniformColors && !plan.Has("BACK_MATERIAL"))
+    {
+      plan.Flags.insert("MATERIAL_UNIFORMS");
+    }
+  }
   const bool perVertex = plan.Has("SUMS_PER_VERTEX");
   const std::string sums = this->ResolveTemplate(vtkPhongLightingLib, "Sums", plan);
   const std::string lights = this->ResolveTemplate(vtkPhongLightingLib, "Lights", plan);
@@ -722,6 +753,20 @@ void vtkPhongShaderBuilder::SetLightUniforms(
   {
     program->SetUniform3f("phongAmbientLight", ambientLight);
   }
+  if (program->IsUniformUsed("phongAmbientTerm"))
+  {
+    // ka*Ca times that light, the material's values as SetMaterialUniforms checks (and
+    // reports) them.
+    vtkProperty* material = plan.FrontMaterial;
+    const double ka = std::isfinite(material->GetAmbient()) ? material->GetAmbient() : 0.0;
+    const double* ca = material->GetAmbientColor();
+    float term[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      term[c] = static_cast<float>(ka * (std::isfinite(ca[c]) ? ca[c] : 0.0) * ambientLight[c]);
+    }
+    program->SetUniform3f("phongAmbientTerm", term);
+  }
 
   // Attenuation coefficients as uploaded: finite and >= 0.
   auto attenuationOf = [&](vtkLight* light)
@@ -864,7 +909,7 @@ void vtkPhongShaderBuilder::SetMaterialUniforms(vtkShaderProgram* program, const
 {
   // VTK uploaded SpecularPower (clamped to 128), the raw specular colour and
   // the colours as they are; replace them with the contract's values.
-  auto upload = [&](vtkProperty* material, const char* suffix)
+  auto upload = [&](vtkProperty* material, const char* suffix, bool report)
   {
     const std::string side(suffix);
     const char* sideName = side.empty() ? "front" : "back";
@@ -876,10 +921,13 @@ void vtkPhongShaderBuilder::SetMaterialUniforms(vtkShaderProgram* program, const
         double value = color[c];
         if (!std::isfinite(value))
         {
-          std::ostringstream problem;
-          problem << "The " << sideName << " material's " << which << " colour component " << value
-                  << " is not finite; it is treated as 0.";
-          this->AddProblem(problem.str());
+          if (report)
+          {
+            std::ostringstream problem;
+            problem << "The " << sideName << " material's " << which << " colour component "
+                    << value << " is not finite; it is treated as 0.";
+            this->AddProblem(problem.str());
+          }
           value = 0.0;
         }
         out[c] = static_cast<float>(value * scale);
@@ -890,10 +938,13 @@ void vtkPhongShaderBuilder::SetMaterialUniforms(vtkShaderProgram* program, const
     {
       if (!std::isfinite(value))
       {
-        std::ostringstream problem;
-        problem << "The " << sideName << " material's " << which << " coefficient " << value
-                << " is not finite; it is treated as 0.";
-        this->AddProblem(problem.str());
+        if (report)
+        {
+          std::ostringstream problem;
+          problem << "The " << sideName << " material's " << which << " coefficient " << value
+                  << " is not finite; it is treated as 0.";
+          this->AddProblem(problem.str());
+        }
         return 0.f;
       }
       return static_cast<float>(value);
@@ -902,35 +953,64 @@ void vtkPhongShaderBuilder::SetMaterialUniforms(vtkShaderProgram* program, const
     const double normalization = LobeNormalization(LightingModelOf(plan.FrontMaterial), shininess);
 
     // The selection of material per face is VTK's (Color::Impl); only values change here.
-    if (program->IsUniformUsed(("ambientColorUniform" + side).c_str()))
+    // Every value is checked (and a problem reported) whether or not the variant reads it.
+    const RGB ambientColor = checkedColor(material->GetAmbientColor(), "ambient", 1.0);
+    const RGB diffuseColor = checkedColor(material->GetDiffuseColor(), "diffuse", 1.0);
+    const RGB specularColor = checkedColor(material->GetSpecularColor(), "specular", normalization);
+    const float opacity = checkedCoefficient(material->GetOpacity(), "opacity");
+    const float ambient = checkedCoefficient(material->GetAmbient(), "ambient");
+    const float diffuse = checkedCoefficient(material->GetDiffuse(), "diffuse");
+    const float specular = checkedCoefficient(material->GetSpecular(), "specular");
+    auto set3 = [&](const char* name, const RGB& value)
     {
-      program->SetUniform3f(("ambientColorUniform" + side).c_str(),
-        checkedColor(material->GetAmbientColor(), "ambient", 1.0).data());
-      program->SetUniform3f(("diffuseColorUniform" + side).c_str(),
-        checkedColor(material->GetDiffuseColor(), "diffuse", 1.0).data());
-      program->SetUniformf(
-        ("opacityUniform" + side).c_str(), checkedCoefficient(material->GetOpacity(), "opacity"));
-    }
-    program->SetUniformf(
-      ("ambientIntensity" + side).c_str(), checkedCoefficient(material->GetAmbient(), "ambient"));
-    program->SetUniformf(
-      ("diffuseIntensity" + side).c_str(), checkedCoefficient(material->GetDiffuse(), "diffuse"));
+      if (program->IsUniformUsed((name + side).c_str()))
+      {
+        program->SetUniform3f((name + side).c_str(), value.data());
+      }
+    };
+    auto set1 = [&](const char* name, float value)
+    {
+      if (program->IsUniformUsed((name + side).c_str()))
+      {
+        program->SetUniformf((name + side).c_str(), value);
+      }
+    };
+    set3("ambientColorUniform", ambientColor);
+    set3("diffuseColorUniform", diffuseColor);
+    set1("opacityUniform", opacity);
+    set1("ambientIntensity", ambient);
+    set1("diffuseIntensity", diffuse);
     if (plan.Has("SPECULAR"))
     {
-      program->SetUniformf(("specularIntensity" + side).c_str(),
-        checkedCoefficient(material->GetSpecular(), "specular"));
-      program->SetUniform3f(("specularColorUniform" + side).c_str(),
-        checkedColor(material->GetSpecularColor(), "specular", normalization).data());
-      program->SetUniformf(("specularPowerUniform" + side).c_str(), static_cast<float>(shininess));
+      set1("specularIntensity", specular);
+      set3("specularColorUniform", specularColor);
+      set1("specularPowerUniform", static_cast<float>(shininess));
     }
   };
-  upload(plan.FrontMaterial, "");
-  // VTK declares back-face uniforms when the actor has a back property; with
-  // one-sided lighting the contract uses the front material on both faces.
-  if (program->IsUniformUsed("ambientIntensityBF"))
+  upload(plan.FrontMaterial, "", true);
+  // The ready-made products of MATERIAL_UNIFORMS (front material only: that variant has
+  // no back material).
+  auto product = [&](const char* name, double coefficient, const double* color, double scale)
   {
-    upload(plan.BackMaterial, "BF");
-  }
+    if (program->IsUniformUsed(name))
+    {
+      float value[3];
+      const double k = std::isfinite(coefficient) ? coefficient : 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        value[c] = static_cast<float>(k * (std::isfinite(color[c]) ? color[c] : 0.0) * scale);
+      }
+      program->SetUniform3f(name, value);
+    }
+  };
+  vtkProperty* front = plan.FrontMaterial;
+  product("phongMaterialAmbient", front->GetAmbient(), front->GetAmbientColor(), 1.0);
+  product("phongMaterialDiffuse", front->GetDiffuse(), front->GetDiffuseColor(), 1.0);
+  product("phongMaterialSpecular", front->GetSpecular(), front->GetSpecularColor(),
+    LobeNormalization(LightingModelOf(front), ShininessOf(front)));
+  // VTK declares back-face uniforms when the actor has a back property; with one-sided
+  // lighting the contract uses the front material on both faces.
+  upload(plan.BackMaterial, "BF", plan.BackMaterial != plan.FrontMaterial);
 }
 
 //------------------------------------------------------------------------------

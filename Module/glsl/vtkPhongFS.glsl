@@ -9,8 +9,28 @@
 //============================================================================
 
 //PHONG_SECTION Dec
+// MATERIAL_UNIFORMS: VTK's material colours are uniform (no mapped scalars, no back
+// material). The products the shader needs are then uploaded ready-made: every uniform
+// read costs each fragment, and VTK's ambientIntensity * ambientColorUniform, ... would
+// read two per colour.
 //PHONG_IF AMBIENT
+//PHONG_IF MATERIAL_UNIFORMS
+uniform vec3 phongAmbientTerm; // ka*Ca*(Ia + ambient light of directional lights)
+//PHONG_IF POSITIONAL_AMBIENT
+uniform vec3 phongMaterialAmbient; // ka*Ca
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF !MATERIAL_UNIFORMS
 uniform vec3 phongAmbientLight; // Ia plus the ambient light of directional lights
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF MATERIAL_UNIFORMS
+//PHONG_IF DIFFUSE
+uniform vec3 phongMaterialDiffuse; // kd*Cd
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+uniform vec3 phongMaterialSpecular; // ks*Cs, times the normalized lobe's factor
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF EMISSION
 uniform vec3 phongEmission;
@@ -114,6 +134,13 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_ENDIF
   vec3 phongTexturedLight = vec3(0.0);
 //PHONG_IF AMBIENT
+//PHONG_IF MATERIAL_UNIFORMS
+  phongTexturedLight += phongAmbientTerm;
+//PHONG_IF POSITIONAL_AMBIENT
+  phongTexturedLight += phongMaterialAmbient * phongSums.ambient;
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF !MATERIAL_UNIFORMS
 //PHONG_IF POSITIONAL_AMBIENT
   phongTexturedLight += ambientColor * (phongAmbientLight + phongSums.ambient);
 //PHONG_ENDIF
@@ -121,8 +148,14 @@ in vec3 phongSpecularLightBFVSOutput;
   phongTexturedLight += ambientColor * phongAmbientLight;
 //PHONG_ENDIF
 //PHONG_ENDIF
+//PHONG_ENDIF
 //PHONG_IF DIFFUSE
+//PHONG_IF MATERIAL_UNIFORMS
+  phongTexturedLight += phongMaterialDiffuse * phongSums.diffuse;
+//PHONG_ENDIF
+//PHONG_IF !MATERIAL_UNIFORMS
   phongTexturedLight += diffuseColor * phongSums.diffuse;
+//PHONG_ENDIF
 //PHONG_ENDIF
   gl_FragData[0] = vec4(phongTexturedLight, opacity);
 
@@ -136,7 +169,12 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
+//PHONG_IF MATERIAL_UNIFORMS
+  gl_FragData[0].rgb += phongMaterialSpecular * phongSums.specular;
+//PHONG_ENDIF
+//PHONG_IF !MATERIAL_UNIFORMS
   gl_FragData[0].rgb += specularColor * phongSums.specular;
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF DEBUG_NORMAL
   gl_FragData[0] = vec4(0.5 * phongNormalVC + 0.5, 1.0);

@@ -36,8 +36,11 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -86,30 +89,6 @@ void AddLight(vtkRenderer* renderer, const double position[3], const double foca
     light->SetAttenuationValues(1.0, 0.1, 0.05);
   }
   renderer->AddLight(light);
-}
-
-// The light sets of the frame-time table.
-void SetLights(vtkRenderer* renderer, const std::string& set)
-{
-  renderer->RemoveAllLights();
-  renderer->AutomaticLightCreationOff();
-  const double origin[3] = { 0.0, 0.0, 0.0 };
-  if (set == "1 headlight")
-  {
-    vtkNew<vtkLight> headlight;
-    headlight->SetLightTypeToHeadlight();
-    renderer->AddLight(headlight);
-    return;
-  }
-  for (int i = 0; i < 8; ++i)
-  {
-    const double angle = 6.283185307 * i / 8.0;
-    const double position[3] = { 1.5 * std::cos(angle), 1.5 * std::sin(angle), 1.5 };
-    const double color[3] = { 0.6 + 0.4 * std::cos(angle), 0.8, 0.6 + 0.4 * std::sin(angle) };
-    const bool positional = set == "8 mixed" && i >= 4;
-    const double cone = (set == "8 mixed" && i >= 6) ? 35.0 : 180.0;
-    AddLight(renderer, position, origin, positional, positional ? cone : 30.0, color);
-  }
 }
 
 struct FrameTimer
@@ -239,88 +218,349 @@ void ShaderSection(const char* meshFile, bool quick)
     "%-34s %10.1f ms %9.1f ms\n", "steady frame", 1e3 * steadyFrame[0], 1e3 * steadyFrame[1]);
 }
 
-void FrameSection(bool quick)
+// One window, the same geometry drawn by each contender in turn, batch after
+// batch, so every contender sees the same machine state. Medians over batches.
+struct Contest
 {
-  const int resolution = quick ? 32 : 256;
-  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
-  const int batches = quick ? 3 : 9, frames = quick ? 2 : 8;
-  auto sphere = Sphere(resolution);
-  std::printf("\n== Frame time against the stock mapper (sphere, %lld triangles, %dx%d) ==\n",
-    static_cast<long long>(sphere->GetNumberOfPolys()), width, height);
-  std::printf(
-    "%-18s %12s %12s %12s %10s\n", "lights", "unlit floor", "stock", "vtkPhong", "ours/stock");
+  vtkRenderWindow* Window;
+  vtkRenderer* Renderer;
+  int Batches;
+  int Frames;
+  std::vector<vtkActor*> Actors; // one per contender, hidden but for the one timed
 
-  vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkRenderWindow> window;
-  vtkPhongTest::UseSharedDisplay(window);
-  window->SetOffScreenRendering(1);
-  window->SetSize(width, height);
-  window->SetMultiSamples(0);
-  window->AddRenderer(renderer);
-
-  // Three actors on the same sphere: stock lit, ours lit, stock unlit.
-  vtkNew<vtkOpenGLPolyDataMapper> stockMapper;
-  vtkNew<vtkPhongPolyDataMapper> phongMapper;
-  vtkNew<vtkOpenGLPolyDataMapper> unlitMapper;
-  vtkPolyDataMapper* mappers[3] = { unlitMapper, stockMapper, phongMapper };
-  vtkActor* actors[3];
-  for (int i = 0; i < 3; ++i)
+  std::vector<double> Run()
   {
-    mappers[i]->SetInputData(sphere);
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mappers[i]);
-    vtkProperty* material = actor->GetProperty();
-    material->SetColor(0.8, 0.6, 0.4);
-    material->SetAmbient(0.1);
-    material->SetDiffuse(0.8);
-    material->SetSpecular(0.5);
-    material->SetSpecularPower(30.0);
-    material->SetLighting(i != 0);
-    renderer->AddActor(actor);
-    actors[i] = actor;
-  }
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, 0.0, 1.6);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetViewAngle(40.0);
-  renderer->ResetCameraClippingRange();
-
-  for (const std::string set : { "1 headlight", "8 directional", "8 mixed" })
-  {
-    SetLights(renderer, set);
-    std::vector<double> times[3];
-    auto show = [&](int which)
+    auto show = [&](size_t which)
     {
-      for (int i = 0; i < 3; ++i)
+      for (size_t i = 0; i < this->Actors.size(); ++i)
       {
-        actors[i]->SetVisibility(i == which);
+        this->Actors[i]->SetVisibility(i == which);
       }
     };
-    for (int which = 0; which < 3; ++which) // build every shader before timing
+    for (size_t which = 0; which < this->Actors.size(); ++which) // build every shader first
     {
       show(which);
-      window->Render();
+      this->Window->Render();
+      this->Window->WaitForCompletion();
     }
-    const FrameTimer timer{ window, frames };
-    for (int batch = 0; batch < batches; ++batch)
+    std::vector<std::vector<double>> times(this->Actors.size());
+    const FrameTimer timer{ this->Window, this->Frames };
+    for (int batch = 0; batch < this->Batches; ++batch)
     {
-      for (int which = 0; which < 3; ++which)
+      for (size_t which = 0; which < this->Actors.size(); ++which)
       {
         show(which);
         times[which].push_back(timer.Batch());
       }
     }
-    const double unlit = Median(times[0]), stock = Median(times[1]), ours = Median(times[2]);
-    std::printf("%-18s %9.2f ms %9.2f ms %9.2f ms %9.2fx\n", set.c_str(), 1e3 * unlit, 1e3 * stock,
-      1e3 * ours, ours / stock);
+    std::vector<double> medians;
+    for (const auto& series : times)
+    {
+      medians.push_back(Median(series));
+    }
+    return medians;
+  }
+};
+
+enum Contender
+{
+  Unlit = 0,
+  Stock = 1,
+  Ours = 2,
+  OursAllFeatures = 3
+};
+
+// The actors of a contest on one mesh: the unlit floor (stock mapper, lighting off), the
+// stock mapper, vtkPhong, and vtkPhong's all-features variant; same material.
+std::vector<vtkSmartPointer<vtkActor>> MakeContenders(
+  vtkPolyData* mesh, int interpolation, bool perVertexGouraud, vtkRenderer* renderer)
+{
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  for (int which = Unlit; which <= OursAllFeatures; ++which)
+  {
+    vtkSmartPointer<vtkPolyDataMapper> mapper;
+    if (which == Ours || which == OursAllFeatures)
+    {
+      auto phong = vtkSmartPointer<vtkPhongPolyDataMapper>::New();
+      phong->SetShaderSpecialization(which == Ours);
+      mapper = phong;
+    }
+    else
+    {
+      mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::New();
+    }
+    mapper->SetInputData(mesh);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    // A vtkPhongProperty only where it changes something (per-vertex Gouraud); otherwise
+    // the same plain vtkProperty settings for everyone.
+    auto material = vtkSmartPointer<vtkPhongProperty>::New();
+    material->SetColor(0.8, 0.6, 0.4);
+    material->SetSpecularColor(1.0, 1.0, 1.0);
+    material->SetAmbient(0.1);
+    material->SetDiffuse(0.8);
+    material->SetSpecular(0.5);
+    material->SetShininess(30.0);
+    material->SetInterpolation(interpolation);
+    material->SetPerVertexGouraud(perVertexGouraud && which == Ours);
+    material->SetLighting(which != Unlit);
+    if (which == Ours && perVertexGouraud)
+    {
+      actor->SetProperty(material);
+    }
+    else
+    {
+      vtkNew<vtkProperty> plain;
+      plain->DeepCopy(material);
+      actor->SetProperty(plain);
+    }
+    renderer->AddActor(actor);
+    actors.push_back(actor);
+  }
+  return actors;
+}
+
+// The light sets: "N KIND" with KIND directional, point, spot or mixed (a quarter each of
+// point and spot lights, the rest directional), or "1 headlight" (VTK's default light).
+// Lights on a ring above the view, coloured, attenuated, spots of 35 degrees.
+void SetLights(vtkRenderer* renderer, const std::string& set)
+{
+  renderer->RemoveAllLights();
+  renderer->AutomaticLightCreationOff();
+  if (set == "1 headlight")
+  {
+    vtkNew<vtkLight> headlight;
+    headlight->SetLightTypeToHeadlight();
+    renderer->AddLight(headlight);
+    return;
+  }
+  const int count = std::stoi(set);
+  const std::string kind = set.substr(set.find(' ') + 1);
+  for (int i = 0; i < count; ++i)
+  {
+    const double angle = 6.283185307 * i / count;
+    const double position[3] = { 1.5 * std::cos(angle), 1.5 * std::sin(angle), 1.5 };
+    const double origin[3] = { 0.0, 0.0, 0.0 };
+    const double color[3] = { 0.6 + 0.4 * std::cos(angle), 0.8, 0.6 + 0.4 * std::sin(angle) };
+    const bool spot = kind == "spot" || (kind == "mixed" && 4 * i >= 3 * count);
+    const bool point = kind == "point" || (kind == "mixed" && !spot && 2 * i >= count);
+    AddLight(renderer, position, origin, spot || point, spot ? 35.0 : 180.0, color);
+  }
+}
+
+struct View
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+
+  View(int width, int height)
+  {
+    vtkPhongTest::UseSharedDisplay(this->Window);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetSize(width, height);
+    this->Window->SetMultiSamples(0);
+    this->Window->AddRenderer(this->Renderer);
+  }
+
+  // The mesh fills most of the view, as the benchmark sphere does.
+  void Frame(vtkPolyData* mesh)
+  {
+    double bounds[6];
+    mesh->GetBounds(bounds);
+    const double center[3] = { (bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
+      (bounds[4] + bounds[5]) / 2 };
+    const double size =
+      std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetFocalPoint(center);
+    camera->SetPosition(center[0], center[1], center[2] + 1.6 * size);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetViewAngle(40.0);
+    this->Renderer->ResetCameraClippingRange();
+  }
+};
+
+void PrintRatio(double ours, double other)
+{
+  std::printf(" %8.2fx", ours / other);
+}
+
+// Frame time by light set: the unlit floor, stock, vtkPhong, vtkPhong all-features.
+void LightSection(bool quick)
+{
+  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
+  auto sphere = Sphere(quick ? 32 : 256);
+  std::printf("\n== Frame time by light set (sphere, %lld triangles, %dx%d, Phong"
+              " interpolation; ms per frame) ==\n",
+    static_cast<long long>(sphere->GetNumberOfPolys()), width, height);
+  std::printf("%-15s %9s %9s %9s %9s %9s %9s %9s\n", "lights", "unlit", "stock", "vtkPhong",
+    "all-feat.", "ours/stk", "ours/unl", "ours/all");
+  View view(width, height);
+  auto actors = MakeContenders(sphere, VTK_PHONG, false, view.Renderer);
+  view.Frame(sphere);
+  Contest contest{ view.Window, view.Renderer, quick ? 2 : 7, quick ? 1 : 4, {} };
+  for (const auto& actor : actors)
+  {
+    contest.Actors.push_back(actor);
+  }
+  const std::vector<std::string> sets = quick
+    ? std::vector<std::string>{ "1 headlight", "8 mixed" }
+    : std::vector<std::string>{ "1 headlight", "1 directional", "1 point", "1 spot",
+        "2 directional", "2 mixed", "8 directional", "8 point", "8 spot", "8 mixed",
+        "32 directional", "32 mixed" };
+  for (const std::string& set : sets)
+  {
+    SetLights(view.Renderer, set);
+    const auto t = contest.Run();
+    if (set == sets.front())
+    {
+      // The floor of any lit shader: normals in the vertex buffer, a varying, normalized
+      // per fragment, no light arithmetic (vtkPhong's ShadingNormal view).
+      auto* phong = vtkPhongPolyDataMapper::SafeDownCast(actors[Ours]->GetMapper());
+      phong->SetDebugViewToShadingNormal();
+      Contest normalsOnly{ view.Window, view.Renderer, contest.Batches, contest.Frames,
+        { actors[Unlit], actors[Ours] } };
+      const auto floor = normalsOnly.Run();
+      phong->SetDebugViewToFinal();
+      std::printf("%-15s %9.2f %9s %9.2f %9s %9s", "(normals only)", 1e3 * floor[0], "",
+        1e3 * floor[1], "", "");
+      PrintRatio(floor[1], floor[0]);
+      std::printf("\n");
+    }
+    std::printf("%-15s %9.2f %9.2f %9.2f %9.2f", set.c_str(), 1e3 * t[Unlit], 1e3 * t[Stock],
+      1e3 * t[Ours], 1e3 * t[OursAllFeatures]);
+    PrintRatio(t[Ours], t[Stock]);
+    PrintRatio(t[Ours], t[Unlit]);
+    PrintRatio(t[Ours], t[OursAllFeatures]);
+    std::printf("\n");
     std::fflush(stdout);
+  }
+}
+
+// Frame time by interpolation, 8 mixed lights. Stock VTK has no per-vertex Gouraud: its
+// "Gouraud" (per fragment) is the comparison for ours.
+void InterpolationSection(bool quick)
+{
+  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
+  auto sphere = Sphere(quick ? 32 : 256);
+  std::printf("\n== Frame time by interpolation (same sphere, 8 mixed lights; ms) ==\n");
+  std::printf("%-20s %9s %9s %9s %9s\n", "interpolation", "unlit", "stock", "vtkPhong", "ours/stk");
+  const struct
+  {
+    const char* Name;
+    int Interpolation;
+    bool PerVertex;
+  } modes[] = { { "flat", VTK_FLAT, false }, { "Gouraud (VTK's)", VTK_GOURAUD, false },
+    { "per-vertex Gouraud", VTK_GOURAUD, true }, { "Phong", VTK_PHONG, false } };
+  for (const auto& mode : modes)
+  {
+    View view(width, height);
+    auto actors = MakeContenders(sphere, mode.Interpolation, mode.PerVertex, view.Renderer);
+    actors[OursAllFeatures]->VisibilityOff(); // not timed here
+    view.Frame(sphere);
+    SetLights(view.Renderer, "8 mixed");
+    Contest contest{ view.Window, view.Renderer, quick ? 2 : 7, quick ? 1 : 4,
+      { actors[Unlit], actors[Stock], actors[Ours] } };
+    const auto t = contest.Run();
+    std::printf(
+      "%-20s %9.2f %9.2f %9.2f", mode.Name, 1e3 * t[Unlit], 1e3 * t[Stock], 1e3 * t[Ours]);
+    PrintRatio(t[Ours], t[Stock]);
+    std::printf("\n");
+    std::fflush(stdout);
+  }
+}
+
+// Heap memory in use by the process, in MiB: llvmpipe keeps vertex buffers there, so the
+// growth over a first render is what a mapper's buffers and shaders cost.
+double HeapInUseMiB()
+{
+  const struct mallinfo2 info = mallinfo2();
+  return static_cast<double>(info.uordblks + info.hblkhd) / (1024.0 * 1024.0);
+}
+
+// Frame time and memory by mesh size, 1 light and 8 mixed lights.
+void MeshSection(const std::vector<std::string>& meshFiles, bool quick)
+{
+  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
+  std::printf("\n== Frame time by mesh (ms) and the memory of a first render (MiB) ==\n");
+  std::printf("%-24s %10s %-13s %9s %9s %9s %9s %9s %9s\n", "mesh", "triangles", "lights", "unlit",
+    "stock", "vtkPhong", "ours/stk", "stock MiB", "ours MiB");
+  std::printf("(MiB: heap growth over the first render of the mesh, each mapper alone)\n");
+  std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> meshes;
+  for (int resolution :
+    quick ? std::vector<int>{ 16, 32 } : std::vector<int>{ 100, 256, 512, 1000, 1414 })
+  {
+    meshes.emplace_back("sphere " + std::to_string(resolution), Sphere(resolution));
+  }
+  for (const auto& file : meshFiles)
+  {
+    vtkNew<vtkPhongOFFReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkPolyDataNormals> normals; // both mappers get the same normals
+    normals->SetInputConnection(reader->GetOutputPort());
+    normals->SplittingOff();
+    normals->Update();
+    const std::string name = file.substr(file.find_last_of('/') + 1);
+    meshes.emplace_back(name, normals->GetOutput());
+  }
+  for (const auto& mesh : meshes)
+  {
+    // Memory first, in a fresh window per mapper: what the first render adds.
+    double memory[2] = { 0.0, 0.0 };
+    for (int which : { Stock, Ours })
+    {
+      View view(width, height);
+      vtkSmartPointer<vtkPolyDataMapper> mapper;
+      if (which == Ours)
+      {
+        mapper = vtkSmartPointer<vtkPhongPolyDataMapper>::New();
+      }
+      else
+      {
+        mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::New();
+      }
+      mapper->SetInputData(mesh.second);
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetSpecular(0.5);
+      view.Renderer->AddActor(actor);
+      view.Frame(mesh.second);
+      SetLights(view.Renderer, "8 mixed");
+      const double before = HeapInUseMiB();
+      view.Window->Render();
+      view.Window->WaitForCompletion();
+      memory[which == Ours] = HeapInUseMiB() - before;
+    }
+    View view(width, height);
+    auto actors = MakeContenders(mesh.second, VTK_PHONG, false, view.Renderer);
+    actors[OursAllFeatures]->VisibilityOff();
+    view.Frame(mesh.second);
+    Contest contest{ view.Window, view.Renderer, quick ? 2 : 5, quick ? 1 : 3,
+      { actors[Unlit], actors[Stock], actors[Ours] } };
+    bool first = true;
+    for (const std::string set : { "1 directional", "8 mixed" })
+    {
+      SetLights(view.Renderer, set);
+      const auto t = contest.Run();
+      std::printf("%-24s %10lld %-13s %9.2f %9.2f %9.2f", first ? mesh.first.c_str() : "",
+        static_cast<long long>(mesh.second->GetNumberOfPolys()), set.c_str(), 1e3 * t[Unlit],
+        1e3 * t[Stock], 1e3 * t[Ours]);
+      PrintRatio(t[Ours], t[Stock]);
+      if (first)
+      {
+        std::printf(" %9.1f %9.1f", memory[0], memory[1]);
+      }
+      std::printf("\n");
+      std::fflush(stdout);
+      first = false;
+    }
   }
 }
 }
 
 int main(int argc, char* argv[])
 {
-  const char* meshFile = nullptr;
+  std::vector<std::string> meshFiles;
   bool quick = false;
   for (int i = 1; i < argc; ++i)
   {
@@ -330,15 +570,17 @@ int main(int argc, char* argv[])
     }
     else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
     {
-      std::printf("usage: %s [MESH.off] [--quick]\n", argv[0]);
+      std::printf("usage: %s [MESH.off ...] [--quick]\n", argv[0]);
       return 0;
     }
     else
     {
-      meshFile = argv[i];
+      meshFiles.emplace_back(argv[i]);
     }
   }
-  ShaderSection(meshFile, quick);
-  FrameSection(quick);
+  ShaderSection(meshFiles.empty() ? nullptr : meshFiles.front().c_str(), quick);
+  LightSection(quick);
+  InterpolationSection(quick);
+  MeshSection(meshFiles, quick);
   return 0;
 }

@@ -44,7 +44,8 @@ int TestPhongShaderSpecialization(int, char*[])
     !Has(fs, "phongSpecular") && !Has(fs, "specularLight"), "no specular code at ks = 0");
   checks.Expect(!Has(fs, "phongDistanceAttenuation"), "no attenuation without positional lights");
   checks.Expect(!Has(fs, "phongPointLight") && !Has(fs, "phongSpotLight"), "no point or spot code");
-  checks.Expect(!Has(fs, "phongAmbientLight"), "no ambient code at ka = 0");
+  checks.Expect(
+    !Has(fs, "phongAmbientLight") && !Has(fs, "phongAmbientTerm"), "no ambient code at ka = 0");
   checks.Expect(!Has(fs, "phongEmission"), "no emission for a plain vtkProperty");
   checks.Expect(!Has(fs, "//PHONG_") && !Has(fs, "@"), "no template directive left");
   checks.Expect(!Has(fs, "dFdx(vertexVC"), "no screen-space normal fallback for clean normals");
@@ -54,7 +55,9 @@ int TestPhongShaderSpecialization(int, char*[])
   fs = render();
   checks.Expect(Has(fs, "phongSpecular(") && Has(fs, "2.0 * NdotL * N - L"), "Phong lobe code");
   checks.Expect(!Has(fs, "halfway"), "no Blinn code with the Phong lobe");
-  checks.Expect(Has(fs, "phongAmbientLight"), "ambient code at ka > 0");
+  checks.Expect(Has(fs, "phongAmbientTerm"), "ambient code at ka > 0 (ready-made ka*Ca*Ia)");
+  checks.Expect(!Has(fs, "ambientColor *") && !Has(fs, "diffuseColor *"),
+    "uniform material colours: VTK's products are not read");
 
   vtkLight* point = vtkPhongTest::AddLight(scene, key, origin, white, true);
   point->SetConeAngle(180.0);
