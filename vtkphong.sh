@@ -8,6 +8,8 @@
 #   ./vtkphong.sh bench    run the benchmarks and print their tables
 #   ./vtkphong.sh extremes run the numerical-stability suite (float GPU against
 #                          the double-precision reference) and print its table
+#   ./vtkphong.sh study    regenerate the speed/accuracy trade study
+#                          (docs/tradeoff.md, .csv and .png)
 #
 # The build directory is ./build (override with VTKPHONG_BUILD_DIR).
 set -euo pipefail
@@ -18,7 +20,7 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 
 packages=(
   cmake g++ make pkg-config
-  libvtk9-dev python3-vtk9 python3-numpy
+  libvtk9-dev python3-vtk9 python3-numpy python3-matplotlib
   libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
   xvfb xauth libgl1-mesa-dri
   libcgal-demo
@@ -82,10 +84,16 @@ case "$command" in
   bench)
     install_packages
     build_project
-    extract_meshes data/meshes/bunny00.off
-    with_display "$build/bin/vtkPhongBenchmark" "$build/data/meshes/bunny00.off"
-    extract_meshes data/meshes/refined_elephant.off
+    extract_meshes data/meshes/bunny00.off data/meshes/refined_elephant.off
+    with_display "$build/bin/vtkPhongBenchmark" "$build/data/meshes/bunny00.off" \
+      "$build/data/meshes/refined_elephant.off"
     "$build/bin/vtkOpenMeshNormalsBenchmark" "$build/data/meshes/refined_elephant.off"
+    ;;
+  study)
+    install_packages
+    build_project
+    PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
+      "$root/Testing/Benchmarks/vtkPhongTradeStudy.py" --out "$root/docs"
     ;;
   extremes)
     install_packages
@@ -95,7 +103,7 @@ case "$command" in
       -T "$build/Testing/Temporary"
     ;;
   *)
-    sed -n '2,13p' "$0" >&2
+    sed -n '2,15p' "$0" >&2
     exit 2
     ;;
 esac
