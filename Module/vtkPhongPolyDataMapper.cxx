@@ -2,95 +2,26 @@
 
 #include "vtkActor.h"
 #include "vtkCellData.h"
-#include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
-#include "vtkPhongShaderBuilder.h"
+#include "vtkPhongMapperCore.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
-#include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
 
-#include <chrono>
-#include <cmath>
-#include <functional>
-#include <set>
 
 vtkStandardNewMacro(vtkPhongPolyDataMapper);
 
 struct vtkPhongPolyDataMapper::Internals
 {
-  vtkNew<vtkPhongShaderBuilder> Builder;
+  vtkNew<vtkPhongMapperCore> Core;
   vtkNew<vtkOpenMeshNormals> Normals;
   // The mapper named vtkOriginalPointIds for picking itself (and may unname it).
   bool NamedPointIds = false;
-  // The plan of each primitive (points, lines, polygons, strips), made afresh
-  // every frame by GetNeedToRebuildShaders and used until the next one.
-  std::map<const vtkOpenGLHelper*, vtkPhongShaderBuilder::Plan> Plans;
-  std::set<std::string> Signatures;
-  // Variants whose shader failed to compile: drawn with VTK's lighting instead.
-  std::set<std::string> FailedSignatures;
-  // Hashes of the shader sources handed to the render window's shader cache.
-  std::set<std::size_t> KnownSources;
-  bool BuiltShaders = false;
-  std::string ReportedProblems;
-
-  // Whether a normals array holds unusable (zero, NaN, infinite) vectors,
-  // cached by the array and its modification time: a scan per change.
-  struct NormalsScan
-  {
-    vtkDataArray* Array = nullptr;
-    vtkMTimeType Time = 0;
-    bool Unusable = false;
-  };
-  NormalsScan PointNormals;
-  NormalsScan CellNormals;
-  bool HasUnusableVectors(vtkDataArray* normals, NormalsScan& cache);
 };
-
-//------------------------------------------------------------------------------
-bool vtkPhongPolyDataMapper::Internals::HasUnusableVectors(
-  vtkDataArray* normals, NormalsScan& cache)
-{
-  if (!normals)
-  {
-    return false;
-  }
-  if (cache.Array == normals && cache.Time == normals->GetMTime())
-  {
-    return cache.Unusable;
-  }
-  cache.Array = normals;
-  cache.Time = normals->GetMTime();
-  cache.Unusable = false;
-  auto unusable = [](double x, double y, double z)
-  {
-    const double lengthSquared = x * x + y * y + z * z;
-    return !(lengthSquared > 0.0) || !std::isfinite(lengthSquared);
-  };
-  const vtkIdType count = normals->GetNumberOfTuples();
-  if (auto* floats = vtkFloatArray::SafeDownCast(normals))
-  {
-    const float* v = floats->GetPointer(0);
-    for (vtkIdType i = 0; i < count && !cache.Unusable; ++i, v += 3)
-    {
-      cache.Unusable = unusable(v[0], v[1], v[2]);
-    }
-  }
-  else
-  {
-    double v[3];
-    for (vtkIdType i = 0; i < count && !cache.Unusable; ++i)
-    {
-      normals->GetTuple(i, v);
-      cache.Unusable = unusable(v[0], v[1], v[2]);
-    }
-  }
-  return cache.Unusable;
-}
 
 //------------------------------------------------------------------------------
 vtkPhongPolyDataMapper::vtkPhongPolyDataMapper()
@@ -129,9 +60,45 @@ const char* vtkPhongPolyDataMapper::GetDebugViewAsString()
 }
 
 //------------------------------------------------------------------------------
+int vtkPhongPolyDataMapper::GetShaderCompileCount()
+{
+  return this->Internal->Core->GetShaderCompileCount();
+}
+
+//------------------------------------------------------------------------------
 int vtkPhongPolyDataMapper::GetNumberOfShaderVariants()
 {
-  return static_cast<int>(this->Internal->Signatures.size());
+  return this->Internal->Core->GetNumberOfShaderVariants();
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongPolyDataMapper::GetLastShaderBuildTime()
+{
+  return this->Internal->Core->GetLastShaderBuildTime();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongPolyDataMapper::GetLastShaderSignature()
+{
+  return this->Internal->Core->GetLastShaderSignature().c_str();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongPolyDataMapper::GetLastVertexShaderSource()
+{
+  return this->Internal->Core->GetLastVertexShaderSource().c_str();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongPolyDataMapper::GetLastFragmentShaderSource()
+{
+  return this->Internal->Core->GetLastFragmentShaderSource().c_str();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongPolyDataMapper::GetLastGeometryShaderSource()
+{
+  return this->Internal->Core->GetLastGeometryShaderSource().c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -139,47 +106,31 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   // The stock test first: it also refreshes this primitive's light complexity.
-  bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
 
+  // What only the stock mapper's protected state tells (vtkPhongCompositeMapperHelper reads
+  // the same for all its blocks).
+  vtkPhongMapperCore* core = this->Internal->Core;
   vtkPhongShaderBuilder::PrimitiveState state;
   state.LightComplexity = this->PrimitiveInfo[&cellBO].LastLightComplexity;
   state.IsTriangles =
     cellBO.PrimitiveType == PrimitiveTris || cellBO.PrimitiveType == PrimitiveTriStrips;
   state.HasPointNormals = this->VBOs->GetNumberOfComponents("normalMC") == 3;
   state.HasCellNormals = this->HaveCellNormals;
-  if (state.HasPointNormals)
-  {
-    state.NormalsMayBeInvalid = this->Internal->HasUnusableVectors(
-      this->CurrentInput->GetPointData()->GetNormals(), this->Internal->PointNormals);
-  }
-  else if (state.HasCellNormals)
-  {
-    state.NormalsMayBeInvalid = this->Internal->HasUnusableVectors(
-      this->CurrentInput->GetCellData()->GetNormals(), this->Internal->CellNormals);
-  }
+  state.NormalsMayBeInvalid = state.HasPointNormals
+    ? core->HasUnusableVectors(this->CurrentInput->GetPointData()->GetNormals())
+    : state.HasCellNormals &&
+      core->HasUnusableVectors(this->CurrentInput->GetCellData()->GetNormals());
   state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
   state.HasGeometryShader = this->DrawingEdges(ren, act) || this->HaveWideLines(ren, act) ||
     act->GetShaderProperty()->HasGeometryShaderCode();
   state.DrawingVertices = this->DrawingVertices;
   state.DrawingSelection = this->DrawingSelection;
 
-  vtkPhongShaderBuilder::Options options;
-  options.DebugView = this->DebugView;
-  options.DebugLightIndex = this->DebugLightIndex;
-  options.Specialize = this->ShaderSpecialization;
-
-  vtkPhongShaderBuilder::Plan plan = this->Internal->Builder->MakePlan(ren, act, state, options);
-  if (plan.Handled && this->Internal->FailedSignatures.count(plan.Signature))
-  {
-    plan = vtkPhongShaderBuilder::Plan();
-  }
-  auto& current = this->Internal->Plans[&cellBO];
-  if (current.Signature != plan.Signature)
-  {
-    rebuild = true;
-  }
-  current = std::move(plan);
-  return rebuild;
+  core->Options.DebugView = this->DebugView;
+  core->Options.DebugLightIndex = this->DebugLightIndex;
+  core->Options.Specialize = this->ShaderSpecialization;
+  return core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
 }
 
 //------------------------------------------------------------------------------
@@ -187,49 +138,17 @@ void vtkPhongPolyDataMapper::BuildShaders(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::BuildShaders(shaders, ren, act);
-  this->Internal->BuiltShaders = true;
-  this->LastVertexSource = shaders[vtkShader::Vertex]->GetSource();
-  this->LastGeometrySource = shaders[vtkShader::Geometry]->GetSource();
-  this->LastFragmentSource = shaders[vtkShader::Fragment]->GetSource();
-  this->LastSignature = this->Internal->Plans[this->LastBoundBO].Signature;
+  this->Internal->Core->ShadersBuilt(shaders, this->LastBoundBO);
 }
 
 //------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
-  this->Internal->BuiltShaders = false;
-  const auto start = std::chrono::steady_clock::now();
+  this->Internal->Core->BeginUpdateShaders();
   this->Superclass::UpdateShaders(cellBO, ren, act);
-  if (!this->Internal->BuiltShaders)
+  if (this->Internal->Core->EndUpdateShaders(cellBO, this))
   {
-    return;
-  }
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-
-  const vtkPhongShaderBuilder::Plan& plan = this->Internal->Plans[&cellBO];
-  if (plan.Handled)
-  {
-    this->Internal->Signatures.insert(plan.Signature);
-  }
-  const std::size_t sourceHash = std::hash<std::string>{}(
-    this->LastVertexSource + '\n' + this->LastGeometrySource + '\n' + this->LastFragmentSource);
-  if (this->Internal->KnownSources.insert(sourceHash).second)
-  {
-    ++this->ShaderCompileCount;
-    this->LastShaderBuildTime = elapsed.count();
-  }
-
-  if (!cellBO.Program && plan.Handled)
-  {
-    // vtkShaderProgram has already printed the numbered source and the log.
-    const std::string signature = plan.Signature;
-    this->Internal->FailedSignatures.insert(signature);
-    vtkErrorMacro("The lighting shader variant [" << signature
-                                                  << "] failed to compile or link (the shader "
-                                                     "program's errors give the numbered source "
-                                                     "and the compiler log); this primitive falls "
-                                                     "back to VTK's own lighting.");
-    this->Superclass::UpdateShaders(cellBO, ren, act);
+    this->Superclass::UpdateShaders(cellBO, ren, act); // now planned with VTK's lighting
   }
 }
 
@@ -237,26 +156,24 @@ void vtkPhongPolyDataMapper::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer*
 void vtkPhongPolyDataMapper::ReplaceShaderLight(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
-  auto found = this->Internal->Plans.find(this->LastBoundBO);
-  if (found == this->Internal->Plans.end() || !found->second.Handled)
+  if (!this->Internal->Core->Handles(this->LastBoundBO))
   {
     this->Superclass::ReplaceShaderLight(shaders, ren, act);
     return;
   }
-  this->Internal->Builder->ReplaceShaderValues(shaders, found->second);
+  this->Internal->Core->ReplaceShaderLight(shaders, this->LastBoundBO);
 }
 
 //------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::SetLightingShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
-  auto found = this->Internal->Plans.find(&cellBO);
-  if (found == this->Internal->Plans.end() || !found->second.Handled)
+  if (!this->Internal->Core->Handles(&cellBO))
   {
     this->Superclass::SetLightingShaderParameters(cellBO, ren, act);
     return;
   }
-  this->Internal->Builder->SetLightUniforms(cellBO.Program, ren, found->second);
+  this->Internal->Core->SetLightUniforms(cellBO, ren);
 }
 
 //------------------------------------------------------------------------------
@@ -264,10 +181,9 @@ void vtkPhongPolyDataMapper::SetPropertyShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::SetPropertyShaderParameters(cellBO, ren, act);
-  auto found = this->Internal->Plans.find(&cellBO);
-  if (found != this->Internal->Plans.end() && found->second.Handled)
+  if (this->Internal->Core->Handles(&cellBO))
   {
-    this->Internal->Builder->SetMaterialUniforms(cellBO.Program, found->second);
+    this->Internal->Core->SetMaterialUniforms(cellBO);
   }
 }
 
@@ -318,25 +234,14 @@ void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 void vtkPhongPolyDataMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::RenderPieceFinish(ren, act);
-  // Report parameter problems once, not every frame: only when they change.
-  const std::string problems = this->Internal->Builder->TakeProblems();
-  if (problems != this->Internal->ReportedProblems)
-  {
-    if (!problems.empty())
-    {
-      vtkErrorMacro("Bad lighting parameters (rendered with the documented substitutes):\n"
-        << problems);
-    }
-    this->Internal->ReportedProblems = problems;
-  }
+  // Parameter problems are reported once, not every frame: only when they change.
+  this->Internal->Core->ReportProblems(this);
 }
 
 //------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  // Programs live in the window's shader cache; a new context compiles again.
-  this->Internal->KnownSources.clear();
-  this->Internal->Plans.clear();
+  this->Internal->Core->ReleaseGraphicsResources();
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
@@ -352,15 +257,8 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalsSplitting: " << (this->NormalsSplitting ? "On" : "Off") << "\n";
   os << indent << "UsedGeneratedNormals: " << (this->UsedGeneratedNormals ? "yes" : "no") << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
-  os << indent << "ShaderCompileCount: " << this->ShaderCompileCount << "\n";
-  os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";
-  os << indent << "LastShaderBuildTime: " << this->LastShaderBuildTime << "\n";
-  os << indent << "LastShaderSignature: " << this->LastSignature << "\n";
-  os << indent << "LastVertexShaderSource: " << this->LastVertexSource.size() << " characters\n";
-  os << indent << "LastFragmentShaderSource: " << this->LastFragmentSource.size()
-     << " characters\n";
-  os << indent << "LastGeometryShaderSource: " << this->LastGeometrySource.size()
-     << " characters\n";
+  os << indent << "Lighting:\n";
+  this->Internal->Core->PrintSelf(os, indent.GetNextIndent());
 }
 
 //------------------------------------------------------------------------------

@@ -40,7 +40,6 @@
 
 #include <map>    // for std::map
 #include <memory> // for std::unique_ptr
-#include <string> // for std::string
 
 class VTKRENDERINGPHONG_EXPORT vtkPhongPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
@@ -164,9 +163,9 @@ public:
    * signatures built. LastShaderBuildTime: seconds spent in the last such build (source
    * generation, compile and link).
    */
-  vtkGetMacro(ShaderCompileCount, int);
+  int GetShaderCompileCount();
   int GetNumberOfShaderVariants();
-  vtkGetMacro(LastShaderBuildTime, double);
+  double GetLastShaderBuildTime();
   ///@}
 
   ///@{
@@ -176,10 +175,10 @@ public:
    * features present and the light counts per kind; it is empty for a primitive drawn by
    * the stock code.
    */
-  const char* GetLastShaderSignature() { return this->LastSignature.c_str(); }
-  const char* GetLastVertexShaderSource() { return this->LastVertexSource.c_str(); }
-  const char* GetLastFragmentShaderSource() { return this->LastFragmentSource.c_str(); }
-  const char* GetLastGeometryShaderSource() { return this->LastGeometrySource.c_str(); }
+  const char* GetLastShaderSignature();
+  const char* GetLastVertexShaderSource();
+  const char* GetLastFragmentShaderSource();
+  const char* GetLastGeometryShaderSource();
   ///@}
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
@@ -214,13 +213,6 @@ protected:
   bool NormalsSplitting = true;
   bool UsedGeneratedNormals = false;
   bool ShaderSpecialization = true;
-
-  int ShaderCompileCount = 0;
-  double LastShaderBuildTime = 0.0;
-  std::string LastSignature;
-  std::string LastVertexSource;
-  std::string LastFragmentSource;
-  std::string LastGeometrySource;
 
 private:
   vtkPhongPolyDataMapper(const vtkPhongPolyDataMapper&) = delete;

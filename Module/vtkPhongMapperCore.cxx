@@ -1,0 +1,280 @@
+#include "vtkPhongMapperCore.h"
+
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkShaderProgram.h"
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <set>
+
+vtkStandardNewMacro(vtkPhongMapperCore);
+
+struct vtkPhongMapperCore::Internals
+{
+  vtkNew<vtkPhongShaderBuilder> Builder;
+  // The plan of each primitive (points, lines, polygons, strips), made afresh every frame
+  // by PlanPrimitive and used until the next one.
+  std::map<const vtkOpenGLHelper*, vtkPhongShaderBuilder::Plan> Plans;
+  std::set<std::string> Signatures;
+  // Variants whose shader failed to compile: drawn with VTK's lighting instead.
+  std::set<std::string> FailedSignatures;
+  // Hashes of the shader sources handed to the render window's shader cache.
+  std::set<std::size_t> KnownSources;
+  bool BuiltShaders = false;
+  std::chrono::steady_clock::time_point UpdateStart;
+  std::string ReportedProblems;
+
+  int ShaderCompileCount = 0;
+  double LastShaderBuildTime = 0.0;
+  std::string LastSignature;
+  std::string LastVertexSource;
+  std::string LastFragmentSource;
+  std::string LastGeometrySource;
+
+  // Whether a normals array holds unusable vectors, by array and modification time.
+  struct NormalsScan
+  {
+    vtkMTimeType Time = 0;
+    bool Unusable = false;
+  };
+  std::map<vtkDataArray*, NormalsScan> NormalsScans;
+};
+
+//------------------------------------------------------------------------------
+vtkPhongMapperCore::vtkPhongMapperCore()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkPhongMapperCore::~vtkPhongMapperCore() = default;
+
+//------------------------------------------------------------------------------
+bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRenderer* ren,
+  vtkActor* act, const vtkPhongShaderBuilder::PrimitiveState& state)
+{
+  vtkPhongShaderBuilder::Plan plan =
+    this->Internal->Builder->MakePlan(ren, act, state, this->Options);
+  if (plan.Handled && this->Internal->FailedSignatures.count(plan.Signature))
+  {
+    plan = vtkPhongShaderBuilder::Plan();
+  }
+  auto& current = this->Internal->Plans[&cellBO];
+  const bool changed = current.Signature != plan.Signature;
+  current = std::move(plan);
+  return changed;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongMapperCore::Handles(const vtkOpenGLHelper* cellBO) const
+{
+  auto found = this->Internal->Plans.find(cellBO);
+  return found != this->Internal->Plans.end() && found->second.Handled;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::BeginUpdateShaders()
+{
+  this->Internal->BuiltShaders = false;
+  this->Internal->UpdateStart = std::chrono::steady_clock::now();
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::ShadersBuilt(
+  std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO)
+{
+  this->Internal->BuiltShaders = true;
+  this->Internal->LastVertexSource = shaders[vtkShader::Vertex]->GetSource();
+  this->Internal->LastGeometrySource = shaders[vtkShader::Geometry]->GetSource();
+  this->Internal->LastFragmentSource = shaders[vtkShader::Fragment]->GetSource();
+  this->Internal->LastSignature = this->Internal->Plans[cellBO].Signature;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongMapperCore::EndUpdateShaders(vtkOpenGLHelper& cellBO, vtkObject* reporter)
+{
+  Internals& internal = *this->Internal;
+  if (!internal.BuiltShaders)
+  {
+    return false;
+  }
+  const std::chrono::duration<double> elapsed =
+    std::chrono::steady_clock::now() - internal.UpdateStart;
+
+  const vtkPhongShaderBuilder::Plan& plan = internal.Plans[&cellBO];
+  if (plan.Handled)
+  {
+    internal.Signatures.insert(plan.Signature);
+  }
+  const std::size_t sourceHash = std::hash<std::string>{}(internal.LastVertexSource + '\n' +
+    internal.LastGeometrySource + '\n' + internal.LastFragmentSource);
+  if (internal.KnownSources.insert(sourceHash).second)
+  {
+    ++internal.ShaderCompileCount;
+    internal.LastShaderBuildTime = elapsed.count();
+  }
+
+  if (!cellBO.Program && plan.Handled)
+  {
+    // vtkShaderProgram has already printed the numbered source and the log.
+    const std::string signature = plan.Signature;
+    internal.FailedSignatures.insert(signature);
+    vtkErrorWithObjectMacro(reporter,
+      "The lighting shader variant ["
+        << signature
+        << "] failed to compile or link (the shader program's errors give the numbered "
+           "source and the compiler log); this primitive falls back to VTK's own lighting.");
+    return true;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::ReplaceShaderLight(
+  std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO)
+{
+  this->Internal->Builder->ReplaceShaderValues(shaders, this->Internal->Plans[cellBO]);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::SetLightUniforms(vtkOpenGLHelper& cellBO, vtkRenderer* ren)
+{
+  this->Internal->Builder->SetLightUniforms(cellBO.Program, ren, this->Internal->Plans[&cellBO]);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::SetMaterialUniforms(vtkOpenGLHelper& cellBO)
+{
+  this->Internal->Builder->SetMaterialUniforms(cellBO.Program, this->Internal->Plans[&cellBO]);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::ReportProblems(vtkObject* reporter)
+{
+  const std::string problems = this->Internal->Builder->TakeProblems();
+  if (problems != this->Internal->ReportedProblems)
+  {
+    if (!problems.empty())
+    {
+      vtkErrorWithObjectMacro(
+        reporter, "Bad lighting parameters (rendered with the documented substitutes):\n"
+          << problems);
+    }
+    this->Internal->ReportedProblems = problems;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongMapperCore::HasUnusableVectors(vtkDataArray* normals)
+{
+  if (!normals)
+  {
+    return false;
+  }
+  auto found = this->Internal->NormalsScans.find(normals);
+  if (found != this->Internal->NormalsScans.end() && found->second.Time == normals->GetMTime())
+  {
+    return found->second.Unusable;
+  }
+  if (this->Internal->NormalsScans.size() > 1024)
+  {
+    this->Internal->NormalsScans.clear(); // arrays come and go: keep the cache small
+  }
+  Internals::NormalsScan& scan = this->Internal->NormalsScans[normals];
+  scan.Time = normals->GetMTime();
+  scan.Unusable = false;
+  auto unusable = [](double x, double y, double z)
+  {
+    const double lengthSquared = x * x + y * y + z * z;
+    return !(lengthSquared > 0.0) || !std::isfinite(lengthSquared);
+  };
+  const vtkIdType count = normals->GetNumberOfTuples();
+  if (auto* floats = vtkFloatArray::SafeDownCast(normals))
+  {
+    const float* v = floats->GetPointer(0);
+    for (vtkIdType i = 0; i < count && !scan.Unusable; ++i, v += 3)
+    {
+      scan.Unusable = unusable(v[0], v[1], v[2]);
+    }
+  }
+  else
+  {
+    double v[3];
+    for (vtkIdType i = 0; i < count && !scan.Unusable; ++i)
+    {
+      normals->GetTuple(i, v);
+      scan.Unusable = unusable(v[0], v[1], v[2]);
+    }
+  }
+  return scan.Unusable;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::ReleaseGraphicsResources()
+{
+  // Programs live in the window's shader cache; a new context compiles again.
+  this->Internal->KnownSources.clear();
+  this->Internal->Plans.clear();
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongMapperCore::GetShaderCompileCount() const
+{
+  return this->Internal->ShaderCompileCount;
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongMapperCore::GetNumberOfShaderVariants() const
+{
+  return static_cast<int>(this->Internal->Signatures.size());
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongMapperCore::GetLastShaderBuildTime() const
+{
+  return this->Internal->LastShaderBuildTime;
+}
+
+//------------------------------------------------------------------------------
+const std::string& vtkPhongMapperCore::GetLastShaderSignature() const
+{
+  return this->Internal->LastSignature;
+}
+
+//------------------------------------------------------------------------------
+const std::string& vtkPhongMapperCore::GetLastVertexShaderSource() const
+{
+  return this->Internal->LastVertexSource;
+}
+
+//------------------------------------------------------------------------------
+const std::string& vtkPhongMapperCore::GetLastFragmentShaderSource() const
+{
+  return this->Internal->LastFragmentSource;
+}
+
+//------------------------------------------------------------------------------
+const std::string& vtkPhongMapperCore::GetLastGeometryShaderSource() const
+{
+  return this->Internal->LastGeometrySource;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DebugView: " << this->Options.DebugView << "\n";
+  os << indent << "DebugLightIndex: " << this->Options.DebugLightIndex << "\n";
+  os << indent << "Specialize: " << (this->Options.Specialize ? "On" : "Off") << "\n";
+  os << indent << "ShaderCompileCount: " << this->GetShaderCompileCount() << "\n";
+  os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";
+  os << indent << "LastShaderBuildTime: " << this->GetLastShaderBuildTime() << "\n";
+  os << indent << "LastShaderSignature: " << this->GetLastShaderSignature() << "\n";
+  os << indent << "Primitives planned: " << this->Internal->Plans.size() << "\n";
+  os << indent << "Failed variants: " << this->Internal->FailedSignatures.size() << "\n";
+}

@@ -1,0 +1,119 @@
+/**
+ * @class   vtkPhongMapperCore
+ * @brief   the lighting half of a vtkPhong mapper, shared by every mapper entry point
+ *
+ * vtkPhongMapperCore carries everything a mapper does with vtkPhong's lighting beyond VTK's
+ * own polydata mapper: the plan of each primitive (vtkPhongShaderBuilder), the bookkeeping of
+ * shader variants (signatures, compile count, build time, the last sources), the fallback to
+ * VTK's lighting when a variant fails to compile, the cached scan for unusable normals, and
+ * the reporting of bad parameters. vtkPhongPolyDataMapper and the composite mapper's helper
+ * (vtkPhongCompositeMapperHelper) each own one and forward their shader overrides to it, so
+ * the two entry points share one implementation; only reading the stock mapper's protected
+ * state (PrimitiveState) is theirs.
+ *
+ * Not wrapped: the mappers are the Python-facing API.
+ *
+ * @sa vtkPhongShaderBuilder vtkPhongPolyDataMapper vtkPhongCompositePolyDataMapper
+ */
+
+#ifndef vtkPhongMapperCore_h
+#define vtkPhongMapperCore_h
+
+#include "vtkObject.h"
+#include "vtkPhongShaderBuilder.h"   // for Plan, PrimitiveState, Options
+#include "vtkRenderingPhongModule.h" // for export macro
+#include "vtkShader.h"               // for vtkShader::Type
+
+#include <map>    // for std::map
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkActor;
+class vtkDataArray;
+class vtkOpenGLHelper;
+class vtkRenderer;
+
+class VTKRENDERINGPHONG_EXPORT vtkPhongMapperCore : public vtkObject
+{
+public:
+  static vtkPhongMapperCore* New();
+  vtkTypeMacro(vtkPhongMapperCore, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The mapper's settings that shape the shader (debug view, light index, specialization).
+   */
+  vtkPhongShaderBuilder::Options Options;
+
+  /**
+   * Plan the primitive about to be drawn (from GetNeedToRebuildShaders). Returns true when
+   * its lighting signature changed, i.e. the shader must be rebuilt.
+   */
+  bool PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act,
+    const vtkPhongShaderBuilder::PrimitiveState& state);
+
+  /**
+   * Whether vtkPhong lights this primitive (false: VTK's own lighting code draws it).
+   */
+  bool Handles(const vtkOpenGLHelper* cellBO) const;
+
+  ///@{
+  /**
+   * The shader life cycle, from the mapper's overrides of the same names. UpdateShaders:
+   * BeginUpdateShaders() before the stock UpdateShaders, EndUpdateShaders() after it; when
+   * EndUpdateShaders returns true the variant failed to compile (the error is reported on
+   * `reporter`) and the mapper calls the stock UpdateShaders once more, which now plans the
+   * primitive with VTK's lighting.
+   */
+  void BeginUpdateShaders();
+  void ShadersBuilt(std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO);
+  bool EndUpdateShaders(vtkOpenGLHelper& cellBO, vtkObject* reporter);
+  void ReplaceShaderLight(
+    std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO);
+  void SetLightUniforms(vtkOpenGLHelper& cellBO, vtkRenderer* ren);
+  void SetMaterialUniforms(vtkOpenGLHelper& cellBO);
+  ///@}
+
+  /**
+   * Report the bad parameters found since the last call through `reporter`'s error macro,
+   * once per change (not every frame).
+   */
+  void ReportProblems(vtkObject* reporter);
+
+  /**
+   * Whether a normals array holds zero, NaN or infinite vectors; scanned once per array
+   * and modification.
+   */
+  bool HasUnusableVectors(vtkDataArray* normals);
+
+  /**
+   * Forget the compiled programs (a new context compiles again) and the plans.
+   */
+  void ReleaseGraphicsResources();
+
+  ///@{
+  /**
+   * Statistics: see vtkPhongPolyDataMapper::GetShaderCompileCount() and the sources.
+   */
+  int GetShaderCompileCount() const;
+  int GetNumberOfShaderVariants() const;
+  double GetLastShaderBuildTime() const;
+  const std::string& GetLastShaderSignature() const;
+  const std::string& GetLastVertexShaderSource() const;
+  const std::string& GetLastFragmentShaderSource() const;
+  const std::string& GetLastGeometryShaderSource() const;
+  ///@}
+
+protected:
+  vtkPhongMapperCore();
+  ~vtkPhongMapperCore() override;
+
+private:
+  vtkPhongMapperCore(const vtkPhongMapperCore&) = delete;
+  void operator=(const vtkPhongMapperCore&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
