@@ -8,7 +8,8 @@ from vtkphong_testing import Checks
 
 checks = Checks()
 
-for name in ("vtkPhongPolyDataMapper", "vtkPhongProperty", "vtkPhongOFFReader",
+for name in ("vtkPhongPolyDataMapper", "vtkPhongCompositePolyDataMapper", "vtkPhongProperty",
+             "vtkPhongOFFReader",
              "vtkOpenMeshNormals", "vtkPhongFloatRenderPass", "vtkPhongReference",
              "vtkPhongImageComparison", "vtkPhongImageIO"):
     cls = getattr(vtkphong, name, None)

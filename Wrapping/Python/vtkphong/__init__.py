@@ -14,7 +14,9 @@ freely with ``vtkmodules``::
     actor.SetMapper(mapper)
     actor.SetProperty(material)
 
-Besides the mapper and its material, the package holds vtkOpenMeshNormals (normals
+Besides the mapper and its material, the package holds
+vtkPhongCompositePolyDataMapper (the same lighting for multiblock and
+partitioned datasets, as ParaView draws them), vtkOpenMeshNormals (normals
 for meshes without them), vtkPhongFloatRenderPass (float read-back), and the
 measuring tools: vtkPhongReference (the model in double precision),
 vtkPhongImageComparison and vtkPhongImageIO (OpenImageIO).
