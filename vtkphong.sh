@@ -10,12 +10,20 @@
 #                          the double-precision reference) and print its table
 #   ./vtkphong.sh study    regenerate the speed/accuracy trade study
 #                          (docs/tradeoff.md, .csv and .png)
+#   ./vtkphong.sh paraview build the ParaView 5.11 plugin against paraview-dev's VTK
+#                          (into ./build-paraview) and run its pvbatch / MPI / pvserver
+#                          tests; `test` runs this stage too after the VTK tests
+#   ./vtkphong.sh paraview-bench
+#                          time Phong Surface against Surface in pvbatch on 1 and 2
+#                          MPI ranks (a 4M-triangle sphere; docs/paraview.md)
 #
-# The build directory is ./build (override with VTKPHONG_BUILD_DIR).
+# The build directory is ./build (override with VTKPHONG_BUILD_DIR); the ParaView
+# build's is ./build-paraview (VTKPHONG_PARAVIEW_BUILD_DIR).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build="${VTKPHONG_BUILD_DIR:-$root/build}"
+paraview_build="${VTKPHONG_PARAVIEW_BUILD_DIR:-$root/build-paraview}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
 packages=(
@@ -25,6 +33,9 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   libcgal-demo
 )
+# The ParaView stage. python3-paraview conflicts with python3-vtk9 and is never
+# installed: its .deb is unpacked into the ParaView build tree instead.
+paraview_packages=(paraview paraview-dev openmpi-bin)
 
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then
@@ -39,7 +50,7 @@ as_root() {
 
 install_packages() {
   missing=()
-  for package in "${packages[@]}"; do
+  for package in "${packages[@]}" "$@"; do
     dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
       missing+=("$package")
   done
@@ -62,6 +73,23 @@ extract_meshes() {
   tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$build/data" --strip-components=1 "$@"
 }
 
+build_paraview_plugin() {
+  local unpacked="$paraview_build/python3-paraview"
+  if [ ! -d "$unpacked/usr/lib/python3/dist-packages/paraview" ]; then
+    mkdir -p "$paraview_build/deb"
+    (cd "$paraview_build/deb" && apt-get download python3-paraview)
+    dpkg-deb -x "$paraview_build"/deb/python3-paraview_*.deb "$unpacked"
+  fi
+  cmake -S "$root" -B "$paraview_build" -DCMAKE_BUILD_TYPE=Release -Wno-dev \
+    -DVTKPHONG_PARAVIEW=ON -DVTKPHONG_PARAVIEW_PYTHON_ROOT="$unpacked"
+  cmake --build "$paraview_build" -j "$jobs"
+}
+
+run_paraview_tests() {
+  cd "$paraview_build"
+  with_display ctest --output-on-failure
+}
+
 with_display() {
   xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
 }
@@ -76,10 +104,27 @@ case "$command" in
       "$build/default-scene.png"
     ;;
   test)
-    install_packages
+    install_packages "${paraview_packages[@]}"
     build_project
-    cd "$build"
-    with_display ctest --output-on-failure -j "$jobs"
+    (cd "$build" && with_display ctest --output-on-failure -j "$jobs")
+    build_paraview_plugin
+    run_paraview_tests
+    ;;
+  paraview)
+    install_packages "${paraview_packages[@]}"
+    build_paraview_plugin
+    run_paraview_tests
+    ;;
+  paraview-bench)
+    install_packages "${paraview_packages[@]}"
+    build_paraview_plugin
+    plugin="$paraview_build/lib/paraview-5.11/plugins/PhongLighting/PhongLighting.so"
+    export PYTHONPATH="$paraview_build/python3-paraview/usr/lib/python3/dist-packages"
+    for ranks in 1 2; do
+      with_display timeout 900 mpiexec --allow-run-as-root --oversubscribe -np "$ranks" \
+        pvbatch --disable-xdisplay-test "$root/ParaView/Testing/BenchPhongParaView.py" \
+        --plugin "$plugin"
+    done
     ;;
   bench)
     install_packages
@@ -103,7 +148,7 @@ case "$command" in
       -T "$build/Testing/Temporary"
     ;;
   *)
-    sed -n '2,15p' "$0" >&2
+    sed -n '2,22p' "$0" >&2
     exit 2
     ;;
 esac

@@ -1,0 +1,88 @@
+"""Frame time of "Phong Surface" against ParaView's "Surface" on a sphere of several
+million triangles, at two image sizes, for however many ranks pvbatch runs on:
+
+    pvbatch --disable-xdisplay-test BenchPhongParaView.py --plugin PhongLighting.so
+    mpiexec -np 2 pvbatch --disable-xdisplay-test BenchPhongParaView.py --plugin ...
+
+(./vtkphong.sh paraview-bench runs both.) Prints one table; asserts nothing. The two
+representations take turns, batch after batch, in one view; a frame is Render() of a
+still (non-LOD) frame, composited by IceT when there are several ranks.
+"""
+
+import argparse
+import os
+import statistics
+import sys
+import time
+
+for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
+    if entry:
+        sys.path.insert(0, entry)
+
+from paraview import servermanager  # noqa: E402
+from paraview.simple import (AddLight, CreateRenderView, LoadPlugin, Render,  # noqa: E402
+                             Show, Sphere)
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--resolution", type=int, default=1414, help="sphere theta/phi resolution")
+parser.add_argument("--batches", type=int, default=5)
+parser.add_argument("--frames", type=int, default=3)
+args = parser.parse_args()
+
+LoadPlugin(args.plugin, remote=False, ns=globals())
+ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+view = CreateRenderView()
+view.OrientationAxesVisibility = 0
+view.LODThreshold = 1e9  # still frames only
+view.UseLight = 0
+for index, (kind, position) in enumerate((("Directional", [1, 1, 2]), ("Positional", [-2, 0, 1]),
+                                           ("Positional", [0, 2, 1]))):
+    light = AddLight(view=view)
+    light.Coords = "Scene"
+    light.Type = kind
+    light.Position = position
+    light.FocalPoint = [0, 0, 0]
+    light.ConeAngle = 90.0 if index == 1 else 25.0
+    light.Intensity = 0.6
+
+displays = {}
+for name in ("Surface", "Phong Surface"):
+    # One source per representation: Show() of one source twice returns the same display.
+    sphere = Sphere(ThetaResolution=args.resolution, PhiResolution=args.resolution)
+    display = Show(sphere, view)
+    display.SetRepresentationType(name)
+    display.Specular = 0.5
+    displays[name] = display
+
+camera = view.GetActiveCamera()
+triangles = 2 * args.resolution * (args.resolution - 2)
+rows = []
+for size in ((800, 600), (1600, 1200)):
+    view.ViewSize = list(size)
+    view.ResetCamera()
+    times = {name: [] for name in displays}
+    for name in displays:  # build buffers and shaders first
+        for other, display in displays.items():
+            display.Visibility = int(other == name)
+        Render(view)
+    for _ in range(args.batches):
+        for name in displays:
+            for other, display in displays.items():
+                display.Visibility = int(other == name)
+            Render(view)
+            start = time.perf_counter()
+            for frame in range(args.frames):
+                # A camera that moves makes every Render() draw (an unchanged scene may not).
+                camera.Azimuth(0.05 if frame % 2 else -0.05)
+                Render(view)
+            times[name].append((time.perf_counter() - start) / args.frames)
+    stock = 1e3 * statistics.median(times["Surface"])
+    ours = 1e3 * statistics.median(times["Phong Surface"])
+    rows.append((size, stock, ours))
+
+print("ranks %d, sphere %d x %d (%d triangles), 3 lights (directional, point, spot)"
+      % (ranks, args.resolution, args.resolution, triangles))
+print("%-10s %14s %18s %8s" % ("image", "Surface (ms)", "Phong Surface (ms)", "ratio"))
+for size, stock, ours in rows:
+    print("%-10s %14.1f %18.1f %7.2fx" % ("%dx%d" % size, stock, ours, ours / stock))

@@ -1,0 +1,218 @@
+"""The PhongLighting plugin in ParaView's engine, run by pvbatch (serial or under MPI) or
+by pvpython connected to a pvserver.
+
+    pvbatch [--disable-xdisplay-test] TestPhongParaView.py --plugin PhongLighting.so \\
+        --baseline B.png --out DIR [--server HOST:PORT]
+
+The verdict is the output: "ERROR:" lines on failure, "all checks passed" otherwise.
+
+A sphere (ParaView's Sphere source, which every rank generates a piece of) coloured by
+the rank that owns each piece is drawn with the "Phong Surface" representation under a
+directional, a point and a spot light. Checks, each failing with "ERROR:":
+
+1. the plugin offers "Phong Surface" for polydata and for unstructured grids;
+2. the composited picture matches the serial baseline (the same picture whatever the
+   number of ranks);
+3. with N ranks, N rank colours are on screen (every rank's piece reached the image);
+4. in the ShadingNormal debug view every visible pixel of every rank's piece is a unit
+   normal encoded as (N + 1) / 2: only vtkPhong's shader draws that, so each rank's piece
+   was lit by it.
+"""
+
+import argparse
+import math
+import os
+import sys
+
+# pvpython puts the prefix it guesses from its libraries (/lib/python3/dist-packages,
+# the system VTK 9.1's vtkmodules on this platform) before PYTHONPATH; ParaView's own
+# Python package, unpacked from python3-paraview, must come first.
+for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
+    if entry:
+        sys.path.insert(0, entry)
+
+from paraview import servermanager  # noqa: E402 (after the path fix)
+from paraview.simple import (  # noqa: E402
+    AddLight, Connect, CreateRenderView, GetParaViewVersion, GetSettingsProxy, LoadPlugin, ProcessIdScalars,
+    Render, SaveScreenshot, Show, Sphere, Tessellate)
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+SIZE = (400, 300)
+failures = []
+
+
+def fail(message):
+    failures.append(message)
+    print("ERROR: " + message)
+
+
+def read_png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    scalars = image.GetPointData().GetScalars()
+    components = scalars.GetNumberOfComponents()
+    pixels = [scalars.GetTuple(i)[:3] for i in range(width * height)]
+    return width, height, components, pixels
+
+
+def background(pixel):
+    return max(pixel) < 8  # the view's background is black
+
+
+def add_lights(view):
+    """A directional key, a point and a spot light (ParaView light proxies, so that they
+    reach a pvserver's ranks), the light kit off."""
+    view.UseLight = 0  # the picture depends on these lights only
+    key = AddLight(view=view)
+    key.Coords = "Scene"
+    key.Type = "Directional"
+    key.Position = [1.0, 1.0, 2.0]
+    key.Intensity = 0.7
+    point = AddLight(view=view)
+    point.Coords = "Scene"
+    point.Type = "Positional"
+    point.ConeAngle = 90.0  # ParaView's widest: a point light's cone test never cuts
+    point.Position = [-1.5, 0.3, 1.0]
+    point.FocalPoint = [0.0, 0.0, 0.0]
+    point.DiffuseColor = [1.0, 0.8, 0.6]
+    spot = AddLight(view=view)
+    spot.Coords = "Scene"
+    spot.Type = "Positional"
+    spot.ConeAngle = 15.0
+    spot.Position = [0.4, 1.5, 1.5]
+    spot.FocalPoint = [0.15, 0.1, 0.3]
+    spot.Intensity = 0.6
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--plugin", required=True)
+    parser.add_argument("--baseline", required=True)
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--server", help="HOST:PORT of a pvserver to connect to")
+    parser.add_argument("--write-baseline", action="store_true")
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+
+    if args.server:
+        host, port = args.server.split(":")
+        Connect(host, int(port))
+        LoadPlugin(args.plugin, remote=True, ns=globals())
+        # Render on the server's ranks (and composite there), whatever the data size.
+        GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
+    LoadPlugin(args.plugin, remote=False, ns=globals())
+    ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+    print("ParaView %s, %d rank(s)" % (GetParaViewVersion(), ranks))
+
+    sphere = Sphere(ThetaResolution=128, PhiResolution=64, Radius=0.5)
+    owners = ProcessIdScalars(Input=sphere)
+    view = CreateRenderView()
+    view.ViewSize = list(SIZE)
+    view.OrientationAxesVisibility = 0
+    view.Background = [0.0, 0.0, 0.0]
+    if hasattr(view, "UseColorPaletteForBackground"):
+        view.UseColorPaletteForBackground = 0
+    view.CameraPosition = [0.0, -0.6, 2.2]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = 30.0
+    add_lights(view)
+
+    display = Show(owners, view)
+    available = display.Representation.Available
+    if "Phong Surface" not in available:
+        fail("no Phong Surface representation for polydata: %s" % available)
+    grid_display = Show(Tessellate(Input=sphere), view)
+    if "Phong Surface" not in grid_display.Representation.Available:
+        fail("no Phong Surface representation for unstructured grids")
+    grid_display.Visibility = 0
+    display.SetRepresentationType("Phong Surface")
+    display.Specular = 0.5
+    display.Shininess = 200.0
+    display.LightingModel = "Blinn-Phong"
+    display.Emission = [0.02, 0.02, 0.05]
+
+    # 2: the lit picture, plain colour, against the serial baseline.
+    display.ColorArrayName = [None, ""]
+    display.DiffuseColor = [0.85, 0.8, 0.7]
+    display.AmbientColor = [0.85, 0.8, 0.7]
+    Render(view)
+    final = os.path.join(args.out, "PhongParaView-%dranks.png" % ranks)
+    SaveScreenshot(final, view, ImageResolution=list(SIZE))
+    if args.write_baseline:
+        SaveScreenshot(args.baseline, view, ImageResolution=list(SIZE))
+    width, height, _, picture = read_png(final)
+    _, _, _, expected = read_png(args.baseline)
+    if len(picture) != len(expected):
+        fail("picture %dx%d, baseline of another size" % (width, height))
+    else:
+        differing = sum(1 for a, b in zip(picture, expected)
+                        if max(abs(x - y) for x, y in zip(a, b)) > 12)
+        print("against the serial baseline: %d of %d pixels differ by more than 12 levels"
+              % (differing, len(picture)))
+        if differing > 40:
+            fail("%d pixels differ from the serial baseline %s" % (differing, args.baseline))
+
+    # 3: each rank's piece in its own colour (red rank 0, blue rank 1, ...).
+    display.ColorArrayName = ["POINTS", "ProcessId"]
+    table = display.LookupTable
+    table.InterpretValuesAsCategories = 1
+    table.Annotations = sum(([str(r), str(r)] for r in range(ranks)), [])
+    palette = [(1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.0, 0.8, 0.0), (1.0, 0.8, 0.0)]
+    table.IndexedColors = [c for r in range(ranks) for c in palette[r % len(palette)]]
+    Render(view)
+    colours = os.path.join(args.out, "PhongParaView-%dranks-owners.png" % ranks)
+    SaveScreenshot(colours, view, ImageResolution=list(SIZE))
+    _, _, _, owners_picture = read_png(colours)
+    owner_of = []
+    for index, pixel in enumerate(owners_picture):
+        x, y = index % width, index // width
+        # Silhouette pixels blend with the background: only pixels whose four neighbours
+        # are on the surface too are attributed.
+        inside = 0 < x < width - 1 and 0 < y < height - 1 and not any(
+            background(owners_picture[index + step]) for step in (-1, 1, -width, width))
+        if background(pixel) or not inside:
+            owner_of.append(None)
+            continue
+        red, green, blue = pixel
+        owner_of.append(0 if red > blue + 20 else 1 if blue > red + 20 else None)
+    counts = [owner_of.count(r) for r in range(min(ranks, 2))]
+    print("visible pixels per rank colour: %s" % counts)
+    if any(count < 500 for count in counts):
+        fail("a rank's piece is missing from the composited picture: %s" % counts)
+
+    # 4: the shading normal view over the same pixels.
+    display.PhongDebugView = "Shading normal"
+    Render(view)
+    normals = os.path.join(args.out, "PhongParaView-%dranks-normals.png" % ranks)
+    SaveScreenshot(normals, view, ImageResolution=list(SIZE))
+    _, _, _, normal_picture = read_png(normals)
+    checked = [0] * max(ranks, 1)
+    bad = [0] * max(ranks, 1)
+    for owner, pixel in zip(owner_of, normal_picture):
+        if owner is None:
+            continue
+        length = math.sqrt(sum((2.0 * c / 255.0 - 1.0) ** 2 for c in pixel))
+        checked[owner] += 1
+        if abs(length - 1.0) > 0.06:
+            bad[owner] += 1
+    print("shading-normal view: pixels checked per rank %s, not a unit normal %s"
+          % (checked[:2], bad[:2]))
+    for rank in range(min(ranks, 2)):
+        if checked[rank] == 0 or bad[rank] > 0.01 * checked[rank]:
+            fail("rank %d's piece is not drawn by vtkPhong's shader (%d of %d pixels)"
+                 % (rank, bad[rank], checked[rank]))
+    display.PhongDebugView = "Final"
+
+    if failures:
+        print("ERROR: %d check(s) failed" % len(failures))
+    else:
+        print("all checks passed")
+
+
+# No sys.exit: pvbatch turns SystemExit into a GLX error at teardown (GLXBadContext) and
+# exit status 1. ctest reads the verdict from the output (ERROR: lines).
+main()
