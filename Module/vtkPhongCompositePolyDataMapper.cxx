@@ -154,31 +154,34 @@ vtkCompositeMapperHelper2* vtkPhongCompositePolyDataMapper::CreateHelper()
 }
 
 //------------------------------------------------------------------------------
-int vtkPhongCompositePolyDataMapper::GetShaderCompileCount()
+namespace
 {
-  int count = 0;
-  for (const auto& helper : this->Helpers)
+// A statistic of the helpers' cores, summed.
+int SumOverHelpers(const std::map<const std::string, vtkCompositeMapperHelper2*>& helpers,
+  int (vtkPhongMapperCore::*statistic)() const)
+{
+  int sum = 0;
+  for (const auto& helper : helpers)
   {
     if (auto* phong = vtkPhongCompositeMapperHelper::SafeDownCast(helper.second))
     {
-      count += phong->GetCore()->GetShaderCompileCount();
+      sum += (phong->GetCore()->*statistic)();
     }
   }
-  return count;
+  return sum;
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongCompositePolyDataMapper::GetShaderCompileCount()
+{
+  return SumOverHelpers(this->Helpers, &vtkPhongMapperCore::GetShaderCompileCount);
 }
 
 //------------------------------------------------------------------------------
 int vtkPhongCompositePolyDataMapper::GetNumberOfShaderVariants()
 {
-  int count = 0;
-  for (const auto& helper : this->Helpers)
-  {
-    if (auto* phong = vtkPhongCompositeMapperHelper::SafeDownCast(helper.second))
-    {
-      count += phong->GetCore()->GetNumberOfShaderVariants();
-    }
-  }
-  return count;
+  return SumOverHelpers(this->Helpers, &vtkPhongMapperCore::GetNumberOfShaderVariants);
 }
 
 //------------------------------------------------------------------------------
