@@ -1,6 +1,7 @@
 /**
  * @class   vtkPhongCompositePolyDataMapper
- * @brief   vtkPhong's lighting for composite datasets (multiblock, partitioned), as ParaView draws them
+ * @brief   vtkPhong's lighting for composite datasets (multiblock, partitioned), as ParaView draws
+ * them
  *
  * vtkPhongCompositePolyDataMapper is a vtkCompositePolyDataMapper2 whose helpers (the
  * polydata mappers that draw the blocks, grouped by what arrays they carry) light with the

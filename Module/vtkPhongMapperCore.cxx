@@ -161,8 +161,8 @@ void vtkPhongMapperCore::ReportProblems(vtkObject* reporter)
   {
     if (!problems.empty())
     {
-      vtkErrorWithObjectMacro(
-        reporter, "Bad lighting parameters (rendered with the documented substitutes):\n"
+      vtkErrorWithObjectMacro(reporter,
+        "Bad lighting parameters (rendered with the documented substitutes):\n"
           << problems);
     }
     this->Internal->ReportedProblems = problems;

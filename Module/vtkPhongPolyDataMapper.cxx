@@ -12,7 +12,6 @@
 #include "vtkProperty.h"
 #include "vtkShaderProperty.h"
 
-
 vtkStandardNewMacro(vtkPhongPolyDataMapper);
 
 struct vtkPhongPolyDataMapper::Internals

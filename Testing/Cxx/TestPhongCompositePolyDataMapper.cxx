@@ -102,8 +102,8 @@ int TestPhongCompositePolyDataMapper(int argc, char* argv[])
       blockMaterial->SetAmbientColor(teal[0], teal[1], teal[2]);
       blockMaterial->SetDiffuseColor(teal[0], teal[1], teal[2]);
     }
-    vtkActor* actor = vtkPhongTest::AddActor(
-      scene, vtkPolyData::SafeDownCast(blocks->GetBlock(b)), blockMaterial);
+    vtkActor* actor =
+      vtkPhongTest::AddActor(scene, vtkPolyData::SafeDownCast(blocks->GetBlock(b)), blockMaterial);
     actor->VisibilityOff();
     separate.push_back(actor);
   }
@@ -153,8 +153,8 @@ int TestPhongCompositePolyDataMapper(int argc, char* argv[])
     writer->Write();
   }
   checks.Expect(largest <= 2 && differing <= 24,
-    "the composite mapper draws what vtkPhongPolyDataMapper draws (max " +
-      std::to_string(largest) + " levels, " + std::to_string(differing) + " pixels)");
+    "the composite mapper draws what vtkPhongPolyDataMapper draws (max " + std::to_string(largest) +
+      " levels, " + std::to_string(differing) + " pixels)");
   for (vtkActor* actor : separate)
   {
     actor->VisibilityOff();

@@ -21,7 +21,7 @@
 #define vtkPhongSurfaceRepresentation_h
 
 #include "vtkGeometryRepresentationWithFaces.h"
-#include "vtkNew.h"                          // for vtkNew
+#include "vtkNew.h"                        // for vtkNew
 #include "vtkPhongRepresentationsModule.h" // for export macro
 
 class vtkOpenMeshNormals;
