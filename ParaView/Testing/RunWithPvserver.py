@@ -14,6 +14,7 @@ import signal
 import socket
 import subprocess
 import sys
+import threading
 import time
 
 
@@ -51,6 +52,9 @@ def main():
         if not ready:
             print("ERROR: pvserver did not start on port %d" % port)
             return 1
+        # Keep draining the server's output: a full pipe would block it mid-render.
+        threading.Thread(target=lambda: [print("[pvserver] " + l.rstrip())
+                                         for l in server.stdout], daemon=True).start()
         result = subprocess.run(
             [args.pvpython, "--force-offscreen-rendering"] + client +
             ["--server", "localhost:%d" % port],

@@ -43,6 +43,12 @@ vtkPhongSurfaceRepresentation::~vtkPhongSurfaceRepresentation() = default;
 void vtkPhongSurfaceRepresentation::SetupDefaults()
 {
   this->Superclass::SetupDefaults();
+  this->ConnectNormals();
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::ConnectNormals()
+{
   if (this->ComputeNormals)
   {
     this->Normals->SetInputConnection(this->GeometryFilter->GetOutputPort());
@@ -102,7 +108,9 @@ void vtkPhongSurfaceRepresentation::SetComputeNormals(int compute)
   if (this->ComputeNormals != (compute != 0))
   {
     this->ComputeNormals = compute != 0;
-    this->SetupDefaults();
+    // Only the one connection changes: SetupDefaults would also replace the mappers'
+    // block attributes (colours, visibilities) and selection.
+    this->ConnectNormals();
     this->MarkModified();
   }
 }

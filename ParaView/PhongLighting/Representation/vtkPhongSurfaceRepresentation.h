@@ -87,6 +87,12 @@ protected:
    */
   void SetupDefaults() override;
 
+  /**
+   * Feed the multiblock maker from the normals filter (ComputeNormals on) or straight from
+   * the geometry filter.
+   */
+  void ConnectNormals();
+
   bool ComputeNormals = true;
   vtkNew<vtkOpenMeshNormals> Normals;
 
