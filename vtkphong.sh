@@ -9,7 +9,7 @@
 #   ./vtkphong.sh extremes run the numerical-stability suite (float GPU against
 #                          the double-precision reference) and print its table
 #   ./vtkphong.sh study    regenerate the speed/accuracy trade study
-#                          (docs/tradeoff.md, .csv and .png)
+#                          (docs/results/tradeoff.md, .csv and .png)
 #   ./vtkphong.sh paraview build the ParaView 5.11 plugin against paraview-dev's VTK
 #                          (into ./build-paraview) and run its pvbatch / MPI / pvserver
 #                          tests; `test` runs this stage too after the VTK tests
@@ -31,7 +31,7 @@ packages=(
   libvtk9-dev python3-vtk9 python3-numpy python3-matplotlib
   libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
   xvfb xauth libgl1-mesa-dri
-  libcgal-demo
+  libcgal-demo universal-ctags
 )
 # The ParaView stage. python3-paraview conflicts with python3-vtk9 and is never
 # installed: its .deb is unpacked into the ParaView build tree instead.
@@ -138,7 +138,7 @@ case "$command" in
     install_packages
     build_project
     PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
-      "$root/Testing/Benchmarks/vtkPhongTradeStudy.py" --out "$root/docs"
+      "$root/Testing/Benchmarks/vtkPhongTradeStudy.py" --out "$root/docs/results"
     ;;
   extremes)
     install_packages

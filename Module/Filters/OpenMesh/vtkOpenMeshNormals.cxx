@@ -1,0 +1,168 @@
+#include "vtkOpenMeshNormals.h"
+
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenMeshNormalsExecution.h"
+#include "vtkOpenMeshNormalsTopology.h"
+#include "vtkPolyData.h"
+
+vtkStandardNewMacro(vtkOpenMeshNormals);
+
+// What the filter keeps between executions: the topology, reused while only
+// the points move, and the arrays of the executions, whose memory is reused.
+struct vtkOpenMeshNormals::Internals
+{
+  vtkOpenMeshNormalsTopology Topology;
+  vtkOpenMeshNormalsWorkspace Workspace;
+};
+
+//------------------------------------------------------------------------------
+vtkOpenMeshNormals::vtkOpenMeshNormals()
+  : Internal(new Internals)
+{
+  this->SetOriginalPointIdsArrayName("vtkOriginalPointIds");
+}
+
+//------------------------------------------------------------------------------
+vtkOpenMeshNormals::~vtkOpenMeshNormals()
+{
+  this->SetOriginalPointIdsArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkOpenMeshNormals::GetWeightingAsString()
+{
+  switch (this->Weighting)
+  {
+    case Uniform:
+      return "Uniform";
+    case Area:
+      return "Area";
+    case Angle:
+      return "Angle";
+    case Max:
+    default:
+      return "Max";
+  }
+}
+
+//------------------------------------------------------------------------------
+// The steps of docs/normals.md, in order; each is one call.
+int vtkOpenMeshNormals::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->NumberOfNonManifoldFaces = this->NumberOfFacesWithRepeatedPoints = 0;
+  this->NumberOfDegenerateFaces = this->NumberOfReorientedFaces = this->NumberOfSplitPoints = 0;
+  this->TopologyReused = false;
+  if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0)
+  {
+    output->ShallowCopy(input); // empty input: nothing to compute
+    return 1;
+  }
+  if (!this->UpdateTopology(input))
+  {
+    output->Initialize(); // aborted, or too large
+    return 1;
+  }
+
+  const vtkOpenMeshNormalsExecution::Settings settings{ this->Weighting, this->FeatureAngle,
+    this->Splitting && this->ComputePointNormals, this->ComputeCellNormals != 0,
+    this->AutoOrientNormals != 0, this->FlipNormals != 0, this->OriginalPointIdsArrayName };
+  vtkOpenMeshNormalsExecution execution(
+    settings, this->Internal->Topology, this->Internal->Workspace, input, output);
+  execution.LoadPositions();
+  execution.ComputeFaceNormals();
+  this->NumberOfReorientedFaces = execution.OrientComponents();
+  this->UpdateProgress(0.75);
+  if (this->GetAbortExecute())
+  {
+    output->Initialize();
+    return 1;
+  }
+
+  if (this->ComputePointNormals && !this->Splitting)
+  {
+    execution.ComputeSharedPointNormals();
+  }
+  else if (this->ComputePointNormals)
+  {
+    execution.CutFans();
+    this->NumberOfSplitPoints = execution.NumberWedges();
+    execution.StoreWedgeNormals();
+    execution.FindSplitSources();
+  }
+  this->UpdateProgress(0.9);
+  if (this->GetAbortExecute())
+  {
+    output->Initialize();
+    return 1;
+  }
+
+  execution.BuildOutputPolys();
+  execution.WritePoints();
+  execution.WriteCells();
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+// Reuses the topology when only the points changed, else builds it; false if
+// building failed (aborted, or a mesh too large).
+bool vtkOpenMeshNormals::UpdateTopology(vtkPolyData* input)
+{
+  vtkOpenMeshNormalsTopology& topology = this->Internal->Topology;
+  const bool consistency = this->Consistency || this->AutoOrientNormals;
+  const bool traversal = this->NonManifoldTraversal != 0;
+  const bool incremental = this->IncrementalConstruction != 0;
+  if (topology.Matches(input, consistency, traversal, incremental))
+  {
+    this->TopologyReused = true;
+  }
+  else
+  {
+    this->Internal->Workspace.LastPolys = nullptr; // made from other connectivity
+    if (!topology.Build(input, consistency, traversal, incremental, this))
+    {
+      return false;
+    }
+  }
+  this->NumberOfNonManifoldFaces = topology.NonManifoldFaces;
+  this->NumberOfFacesWithRepeatedPoints = topology.RepeatedPointFaces;
+  this->NumberOfDegenerateFaces = topology.DegenerateFaces;
+  if (topology.NonManifoldFaces && !this->TopologyReused)
+  {
+    vtkWarningMacro(<< topology.NonManifoldFaces
+                    << " faces made an edge or a vertex non-manifold; each got its own copies "
+                       "of its vertices (it keeps its own normals at those vertices).");
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Weighting: " << this->GetWeightingAsString() << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "Splitting: " << (this->Splitting ? "On" : "Off") << "\n";
+  os << indent << "Consistency: " << (this->Consistency ? "On" : "Off") << "\n";
+  os << indent << "AutoOrientNormals: " << (this->AutoOrientNormals ? "On" : "Off") << "\n";
+  os << indent << "ComputePointNormals: " << (this->ComputePointNormals ? "On" : "Off") << "\n";
+  os << indent << "ComputeCellNormals: " << (this->ComputeCellNormals ? "On" : "Off") << "\n";
+  os << indent << "FlipNormals: " << (this->FlipNormals ? "On" : "Off") << "\n";
+  os << indent << "NonManifoldTraversal: " << (this->NonManifoldTraversal ? "On" : "Off") << "\n";
+  os << indent << "IncrementalConstruction: " << (this->IncrementalConstruction ? "On" : "Off")
+     << "\n";
+  os << indent << "OriginalPointIdsArrayName: "
+     << (this->OriginalPointIdsArrayName ? this->OriginalPointIdsArrayName : "(none)") << "\n";
+  os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
+  os << indent << "NumberOfFacesWithRepeatedPoints: " << this->NumberOfFacesWithRepeatedPoints
+     << "\n";
+  os << indent << "NumberOfDegenerateFaces: " << this->NumberOfDegenerateFaces << "\n";
+  os << indent << "NumberOfReorientedFaces: " << this->NumberOfReorientedFaces << "\n";
+  os << indent << "NumberOfSplitPoints: " << this->NumberOfSplitPoints << "\n";
+  os << indent << "TopologyReused: " << (this->TopologyReused ? "yes" : "no") << "\n";
+}

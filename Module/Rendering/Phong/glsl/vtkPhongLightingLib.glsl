@@ -1,0 +1,233 @@
+//============================================================================
+// vtkPhong lighting library: the lights of the scene and the sum of their
+// contributions (docs/lighting-model.md):
+//
+//   C = E + ka*Ca*Ia
+//         + sum_i A_i * ( ka*Ca*La_i*I_i + kd*Cd*Ld_i*I_i*max(N.L_i, 0)
+//                       + ks*Cs*Ls_i*I_i*S_i*G_i )
+//
+// This file is a template read by vtkPhongShaderBuilder. A line between
+// "//PHONG_IF FLAG" and "//PHONG_ENDIF" is kept only when the scene needs FLAG
+// ("!FLAG": when it does not), and @NAME@ is replaced by a number, so the
+// shader carries only the light kinds and the terms in use. Light colours
+// arrive premultiplied by the light's intensity. Directions and positions are
+// in view coordinates (VC). The ambient light of directional lights does not
+// depend on the surface and is folded into one uniform on the CPU.
+//============================================================================
+
+//PHONG_SECTION Sums
+//PHONG_IF LIGHT_SUMS
+// The light reaching a surface point, summed over lights, before the
+// material's coefficients and colours multiply it.
+struct phongLightSums
+{
+//PHONG_IF POSITIONAL_AMBIENT
+  vec3 ambient; // sum over positional lights of A_i*La_i*I_i
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+  vec3 diffuse; // sum of A_i*Ld_i*I_i*max(N.L_i, 0)
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+  vec3 specular; // sum of A_i*Ls_i*I_i*S_i*G_i
+//PHONG_ENDIF
+};
+//PHONG_ENDIF
+
+//PHONG_SECTION Lights
+//PHONG_IF DIRECTIONAL
+const int phongDirectionalLightCount = @DIRECTIONAL_COUNT@;
+uniform vec3 phongDirectionalLightToLightVC[@DIRECTIONAL_COUNT@]; // unit L_i
+//PHONG_IF DIFFUSE
+uniform vec3 phongDirectionalLightDiffuse[@DIRECTIONAL_COUNT@]; // Ld_i*I_i
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+uniform vec3 phongDirectionalLightSpecular[@DIRECTIONAL_COUNT@]; // Ls_i*I_i
+//PHONG_ENDIF
+//PHONG_ENDIF
+
+//PHONG_IF POINT
+const int phongPointLightCount = @POINT_COUNT@;
+uniform vec3 phongPointLightPositionVC[@POINT_COUNT@];
+//PHONG_IF POINT_ATTENUATION
+uniform vec3 phongPointLightAttenuation[@POINT_COUNT@]; // (c, l, q)
+//PHONG_ENDIF
+//PHONG_IF POSITIONAL_AMBIENT
+uniform vec3 phongPointLightAmbient[@POINT_COUNT@]; // La_i*I_i
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+uniform vec3 phongPointLightDiffuse[@POINT_COUNT@];
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+uniform vec3 phongPointLightSpecular[@POINT_COUNT@];
+//PHONG_ENDIF
+//PHONG_ENDIF
+
+//PHONG_IF SPOT
+const int phongSpotLightCount = @SPOT_COUNT@;
+uniform vec3 phongSpotLightPositionVC[@SPOT_COUNT@];
+//PHONG_IF SPOT_ATTENUATION
+uniform vec3 phongSpotLightAttenuation[@SPOT_COUNT@]; // (c, l, q)
+//PHONG_ENDIF
+uniform vec3 phongSpotLightAxisVC[@SPOT_COUNT@]; // unit, from the light to its focal point
+uniform float phongSpotLightCosCutoff[@SPOT_COUNT@]; // cos(cone angle)
+//PHONG_IF SPOT_FALLOFF
+uniform float phongSpotLightExponent[@SPOT_COUNT@];
+//PHONG_ENDIF
+//PHONG_IF SOFT_SPOT_EDGE
+uniform float phongSpotLightCosInner[@SPOT_COUNT@]; // cos(cone angle - edge width)
+//PHONG_ENDIF
+//PHONG_IF POSITIONAL_AMBIENT
+uniform vec3 phongSpotLightAmbient[@SPOT_COUNT@];
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+uniform vec3 phongSpotLightDiffuse[@SPOT_COUNT@];
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+uniform vec3 phongSpotLightSpecular[@SPOT_COUNT@];
+//PHONG_ENDIF
+//PHONG_ENDIF
+
+//PHONG_IF ATTENUATION
+// Distance attenuation 1/(c + l*d + q*d^2). The denominator is kept above
+// 1e-20 so a light on the surface, or coefficients that vanish, stay finite.
+// Lights with (c, l, q) = (1, 0, 0), VTK's default, need none of it.
+float phongDistanceAttenuation(vec3 coefficients, float d)
+{
+  return 1.0 / max(coefficients.x + d * (coefficients.y + d * coefficients.z), 1.0e-20);
+}
+//PHONG_ENDIF
+
+//PHONG_IF POSITIONAL
+// Unit vector from the surface point to a positional light, and the distance.
+// A light exactly at the point has no direction; it lights the point head-on.
+vec3 phongToPositionalLight(vec3 lightPositionVC, vec3 positionVC, vec3 N, out float d)
+{
+  vec3 toLight = lightPositionVC - positionVC;
+  d = length(toLight);
+  return d > 0.0 ? toLight / d : N;
+}
+//PHONG_ENDIF
+
+//PHONG_IF SPECULAR
+// S_i*G_i for one light: the lobe, gated off for a light behind the surface.
+// NdotL is N.L before clamping. Shininess 0 gives a lobe of 1 wherever the gate
+// is open, which GLSL's pow(0, 0) leaves undefined.
+float phongSpecular(vec3 N, vec3 L, vec3 V, float NdotL, float shininess)
+{
+//PHONG_IF LOBE_PHONG
+  // R = reflect(-L, N) = 2(N.L)N - L
+  float cosine = clamp(dot(2.0 * NdotL * N - L, V), 0.0, 1.0);
+  float lobe = shininess > 0.0 ? pow(cosine, shininess) : 1.0;
+//PHONG_ENDIF
+//PHONG_IF LOBE_BLINN
+  // H = normalize(L + V); L = -V has no halfway vector and no highlight.
+  vec3 halfway = L + V;
+  float halfwayLength = length(halfway);
+  float cosine = halfwayLength > 0.0 ? clamp(dot(N, halfway) / halfwayLength, 0.0, 1.0) : 0.0;
+  float lobe = halfwayLength > 0.0 ? (shininess > 0.0 ? pow(cosine, shininess) : 1.0) : 0.0;
+//PHONG_ENDIF
+//PHONG_IF SMOOTH_TERMINATOR
+  return lobe * max(NdotL, 0.0);
+//PHONG_ENDIF
+//PHONG_IF !SMOOTH_TERMINATOR
+  // The gate opens a little above N.L = 0: a light in the surface's plane (a box face
+  // along an axis-aligned light) has N.L = 0 up to rounding, and a gate at exactly 0 would
+  // scatter highlights over the face at random (docs/results/extremes.md).
+  return NdotL > 1.0e-4 ? lobe : 0.0;
+//PHONG_ENDIF
+}
+//PHONG_ENDIF
+
+//PHONG_IF LIGHT_SUMS
+// Sums the switched-on lights at a surface point with shading normal N (unit)
+// and unit vector V towards the eye.
+phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
+{
+  phongLightSums sums;
+//PHONG_IF POSITIONAL_AMBIENT
+  sums.ambient = vec3(0.0);
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+  sums.diffuse = vec3(0.0);
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+  sums.specular = vec3(0.0);
+//PHONG_ENDIF
+
+//PHONG_IF DIRECTIONAL
+  for (int i = 0; i < phongDirectionalLightCount; ++i)
+  {
+    vec3 L = phongDirectionalLightToLightVC[i];
+    float NdotL = dot(N, L);
+//PHONG_IF DIFFUSE
+    sums.diffuse += phongDirectionalLightDiffuse[i] * max(NdotL, 0.0);
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+    sums.specular += phongDirectionalLightSpecular[i] * phongSpecular(N, L, V, NdotL, shininess);
+//PHONG_ENDIF
+  }
+//PHONG_ENDIF
+
+//PHONG_IF POINT
+  for (int i = 0; i < phongPointLightCount; ++i)
+  {
+    float d;
+    vec3 L = phongToPositionalLight(phongPointLightPositionVC[i], positionVC, N, d);
+//PHONG_IF POINT_ATTENUATION
+    float A = phongDistanceAttenuation(phongPointLightAttenuation[i], d);
+//PHONG_ENDIF
+//PHONG_IF !POINT_ATTENUATION
+    const float A = 1.0;
+//PHONG_ENDIF
+    float NdotL = dot(N, L);
+//PHONG_IF POSITIONAL_AMBIENT
+    sums.ambient += A * phongPointLightAmbient[i];
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+    sums.diffuse += (A * max(NdotL, 0.0)) * phongPointLightDiffuse[i];
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+    sums.specular += (A * phongSpecular(N, L, V, NdotL, shininess)) * phongPointLightSpecular[i];
+//PHONG_ENDIF
+  }
+//PHONG_ENDIF
+
+//PHONG_IF SPOT
+  for (int i = 0; i < phongSpotLightCount; ++i)
+  {
+    float d;
+    vec3 L = phongToPositionalLight(phongSpotLightPositionVC[i], positionVC, N, d);
+    // cos_phi: between the spot axis and the direction from the light to the point
+    float cosPhi = dot(-L, phongSpotLightAxisVC[i]);
+//PHONG_IF SPOT_FALLOFF
+    float spot = cosPhi >= phongSpotLightCosCutoff[i] ? pow(max(cosPhi, 0.0), phongSpotLightExponent[i]) : 0.0;
+//PHONG_ENDIF
+//PHONG_IF !SPOT_FALLOFF
+    // exponent 1 (VTK's default); inside a cone below 90 degrees cos_phi > 0
+    float spot = cosPhi >= phongSpotLightCosCutoff[i] ? cosPhi : 0.0;
+//PHONG_ENDIF
+//PHONG_IF SOFT_SPOT_EDGE
+    spot *= smoothstep(phongSpotLightCosCutoff[i], phongSpotLightCosInner[i], cosPhi);
+//PHONG_ENDIF
+//PHONG_IF SPOT_ATTENUATION
+    float A = spot * phongDistanceAttenuation(phongSpotLightAttenuation[i], d);
+//PHONG_ENDIF
+//PHONG_IF !SPOT_ATTENUATION
+    float A = spot;
+//PHONG_ENDIF
+    float NdotL = dot(N, L);
+//PHONG_IF POSITIONAL_AMBIENT
+    sums.ambient += A * phongSpotLightAmbient[i];
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE
+    sums.diffuse += (A * max(NdotL, 0.0)) * phongSpotLightDiffuse[i];
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+    sums.specular += (A * phongSpecular(N, L, V, NdotL, shininess)) * phongSpotLightSpecular[i];
+//PHONG_ENDIF
+  }
+//PHONG_ENDIF
+
+  return sums;
+}
+//PHONG_ENDIF
