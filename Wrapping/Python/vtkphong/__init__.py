@@ -28,5 +28,8 @@ The lighting equation is described in docs/lighting-model.md of the project.
 # object factory must be registered before a render window is made.
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
+# One extension module per VTK module of the project (Module/<Kit>/<Name>).
+from .vtkFiltersOpenMesh import *  # noqa: F401,F403
+from .vtkIOMesh import *  # noqa: F401,F403
 from .vtkRenderingPhong import *  # noqa: F401,F403
-from .vtkPhongReference import *  # noqa: F401,F403
+from .vtkReferencePhong import *  # noqa: F401,F403

@@ -1,0 +1,243 @@
+"""Rendering for vtkphong-render: the VTK pipeline that draws the parts and the
+image file it writes.
+
+The picture is read back through vtkPhongFloatRenderPass, so that an .exr
+keeps the unclamped values; a .png clamps them as it is written.
+"""
+
+import math
+import os
+
+from vtkphong._errors import RenderError
+from vtkphong._scene import STUDIO_RIG
+
+OUTPUTS = {
+    ".png": "8-bit RGB (RGBA with --transparent), clamped to [0, 1]",
+    ".exr": "32-bit float RGBA, unclamped (values above 1 kept)",
+}
+
+
+def render(parts, settings, progress):
+    """The float RGBA image of the parts (a vtkImageData)."""
+    import vtkphong
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+
+    window, renderer = _make_window(settings)
+    for part in parts:
+        renderer.AddActor(_actor_for(part, settings, progress))
+    _place_camera(renderer, settings["camera"])
+    center, radius = _bounding_sphere(renderer)
+    lights = settings["lights"] if settings["lights"] is not None else STUDIO_RIG
+    _add_lights(renderer, lights, center, radius)
+
+    float_pass = vtkphong.vtkPhongFloatRenderPass()
+    renderer.SetPass(float_pass)
+    progress.stage("rendering")
+    window.Render()
+    image = vtkImageData()
+    image.DeepCopy(float_pass.GetFloatImage())
+    window.Finalize()
+    return image
+
+
+def write_image(image, path, settings):
+    import vtkphong
+    from vtkmodules.vtkImagingCore import vtkImageExtractComponents
+    extension = os.path.splitext(path)[1].lower()
+    if extension == ".png" and not settings["transparent"]:
+        rgb = vtkImageExtractComponents()
+        rgb.SetInputData(image)
+        rgb.SetComponents(0, 1, 2)
+        rgb.Update()
+        image = rgb.GetOutput()
+    if not vtkphong.vtkPhongImageIO().WriteImage(image, path):
+        raise RenderError("cannot write %s" % path)
+
+
+# --- the window, the camera ------------------------------------------------------
+
+def _make_window(settings):
+    """An offscreen window and its renderer, lit only by the lights added later (no
+    automatic headlight)."""
+    from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(True)
+    window.SetMultiSamples(0)
+    window.SetSize(settings["size"])
+    renderer = vtkRenderer()
+    window.AddRenderer(renderer)
+    renderer.SetBackground(settings["background"])
+    renderer.SetAmbient(settings["renderer_ambient"])
+    renderer.AutomaticLightCreationOff()
+    return window, renderer
+
+
+def _place_camera(renderer, camera_settings):
+    """Fit the camera to the mesh, turn it, then fit again so the turned view is framed."""
+    camera = renderer.GetActiveCamera()
+    renderer.ResetCamera()
+    camera.Azimuth(camera_settings["azimuth"])
+    camera.Elevation(camera_settings["elevation"])
+    camera.OrthogonalizeViewUp()
+    renderer.ResetCamera()
+    camera.Zoom(camera_settings["zoom"])
+    renderer.ResetCameraClippingRange()
+
+
+def _bounding_sphere(renderer):
+    """The centre and radius of the visible props: the unit of scene-light positions."""
+    bounds = renderer.ComputeVisiblePropBounds()
+    center = [(bounds[2 * i] + bounds[2 * i + 1]) / 2.0 for i in range(3)]
+    radius = 0.5 * math.sqrt(sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2 for i in range(3)))
+    if not math.isfinite(radius) or radius <= 0.0:
+        radius = 1.0
+    return center, radius
+
+
+# --- an actor per part -----------------------------------------------------------
+
+def _actor_for(part, settings, progress):
+    from vtkmodules.vtkRenderingCore import vtkActor
+    mapper = _mapper_for(part, settings, progress)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.SetProperty(_property_for(part, settings))
+    if part.texture is not None:
+        actor.SetTexture(part.texture)
+    return actor
+
+
+def _mapper_for(part, settings, progress):
+    from vtkphong import vtkOpenMeshNormals, vtkPhongPolyDataMapper
+    # Names to the wrapped enum constants: the C++ order of the enums is not relied on.
+    weightings = {"uniform": vtkOpenMeshNormals.Uniform, "area": vtkOpenMeshNormals.Area,
+                  "angle": vtkOpenMeshNormals.Angle, "max": vtkOpenMeshNormals.Max}
+    views = {"final": vtkPhongPolyDataMapper.Final,
+             "ambient": vtkPhongPolyDataMapper.AmbientTerm,
+             "diffuse": vtkPhongPolyDataMapper.DiffuseTerm,
+             "specular": vtkPhongPolyDataMapper.SpecularTerm,
+             "emission": vtkPhongPolyDataMapper.EmissionTerm,
+             "normal": vtkPhongPolyDataMapper.ShadingNormal,
+             "single-light": vtkPhongPolyDataMapper.SingleLight}
+    mapper = vtkPhongPolyDataMapper()
+    mapper.SetInputData(part.polydata)
+    colors = _has_colors(part.polydata) and settings["material"]["color"] is None
+    mapper.SetScalarVisibility(colors)
+    mapper.SetNormalsWeighting(weightings[settings["normals"]["weighting"]])
+    mapper.SetNormalsFeatureAngle(settings["normals"]["feature_angle"])
+    mapper.SetNormalsSplitting(settings["normals"]["splitting"])
+    mapper.SetDebugView(views[settings["debug_view"]])
+    mapper.SetDebugLightIndex(settings["debug_light"])
+    progress.observe(mapper.GetNormalsGenerator(), "computing normals")
+    return mapper
+
+
+def _has_colors(polydata):
+    """Whether the file has 8-bit colours, which the mapper shows as they are."""
+    for data in (polydata.GetPointData(), polydata.GetCellData()):
+        scalars = data.GetScalars()
+        if (scalars is not None and scalars.GetDataTypeAsString() == "unsigned char"
+                and scalars.GetNumberOfComponents() in (3, 4)):
+            return True
+    return False
+
+
+# --- the material ----------------------------------------------------------------
+
+def _property_for(part, settings):
+    """The part's material: the .mtl file's values for an OBJ part, else the defaults;
+    then whatever the scene file or the flags set."""
+    from vtkphong import vtkPhongProperty
+    lobes = {"phong": vtkPhongProperty.Phong, "blinn-phong": vtkPhongProperty.BlinnPhong,
+             "normalized-phong": vtkPhongProperty.NormalizedPhong,
+             "normalized-blinn-phong": vtkPhongProperty.NormalizedBlinnPhong}
+    material = settings["material"]
+    # An .mtl material gives way only to what the user chose; the defaults set it all.
+    chosen = settings["material_set"] if part.material is not None else set(material)
+    prop = vtkPhongProperty()
+    if part.material is not None:
+        _copy_file_material(prop, part, material["shininess"])
+    _apply_material(prop, part, material, chosen)
+    prop.SetEmission(material["emission"])
+    prop.SetLightingModel(lobes[settings["lobe"]])
+    _set_interpolation(prop, settings["interpolation"])
+    return prop
+
+
+def _copy_file_material(prop, part, default_shininess):
+    source = part.material
+    prop.SetAmbientColor(source.GetAmbientColor())
+    prop.SetDiffuseColor(source.GetDiffuseColor())
+    prop.SetSpecularColor(source.GetSpecularColor())
+    prop.SetAmbient(source.GetAmbient())
+    prop.SetDiffuse(source.GetDiffuse())
+    prop.SetSpecular(source.GetSpecular())
+    prop.SetOpacity(source.GetOpacity())
+    prop.SetLighting(source.GetLighting())
+    # The file's own Ns, unclamped (the importer's property holds a clamped one).
+    prop.SetShininess(part.shininess if part.shininess is not None else default_shininess)
+
+
+def _apply_material(prop, part, material, chosen):
+    """Only the chosen keys: an OBJ part keeps its .mtl values for the others."""
+    if "color" in chosen:
+        # vtkProperty.SetColor also sets the specular colour; highlights stay as chosen.
+        prop.SetColor(material["color"] if material["color"] is not None else [0.8, 0.8, 0.8])
+        if part.material is not None:
+            prop.SetSpecularColor(part.material.GetSpecularColor())
+    if "specular_color" in chosen:
+        prop.SetSpecularColor(material["specular_color"])
+    for key, setter in (("ambient", prop.SetAmbient), ("diffuse", prop.SetDiffuse),
+                        ("specular", prop.SetSpecular), ("shininess", prop.SetShininess)):
+        if key in chosen:
+            setter(material[key])
+
+
+def _set_interpolation(prop, interpolation):
+    setters = {"flat": prop.SetInterpolationToFlat,
+               "gouraud": prop.SetInterpolationToGouraud,
+               "per-vertex-gouraud": prop.SetInterpolationToPerVertexGouraud,
+               "phong": prop.SetInterpolationToPhong}
+    setters[interpolation]()
+
+
+# --- the lights ------------------------------------------------------------------
+
+def _add_lights(renderer, lights, center, radius):
+    for spec in lights:
+        renderer.AddLight(_make_light(spec, center, radius))
+
+
+def _make_light(spec, center, radius):
+    """A vtkLight from a light of the settings (a scene file's or --light's, validated)."""
+    from vtkmodules.vtkRenderingCore import vtkLight
+    light = vtkLight()
+    _place_light(light, spec, center, radius)
+    light.SetPositional(spec["type"] != "directional")
+    light.SetConeAngle(spec.get("cone_angle", 30.0) if spec["type"] == "spot" else 180.0)
+    light.SetExponent(spec.get("exponent", 1.0))
+    light.SetAttenuationValues(spec.get("attenuation", [1.0, 0.0, 0.0]))
+    color = spec.get("color", [1.0, 1.0, 1.0])
+    light.SetDiffuseColor(spec.get("diffuse_color", color))
+    light.SetSpecularColor(spec.get("specular_color", color))
+    light.SetAmbientColor(spec.get("ambient_color", [0.0, 0.0, 0.0]))
+    light.SetIntensity(spec.get("intensity", 1.0))
+    return light
+
+
+def _place_light(light, spec, center, radius):
+    """Scene lights are placed in units of the mesh's bounding radius from its centre,
+    so one scene file fits meshes of any size and position."""
+    kind = spec.get("kind", "scene")
+    position = spec.get("position", [0.0, 0.0, 1.0])
+    focal = spec.get("focal_point", [0.0, 0.0, 0.0])
+    if kind == "headlight":
+        light.SetLightTypeToHeadlight()
+    elif kind == "camera":
+        light.SetLightTypeToCameraLight()
+        light.SetPosition(position)
+        light.SetFocalPoint(focal)
+    else:
+        light.SetLightTypeToSceneLight()
+        light.SetPosition([c + radius * p for c, p in zip(center, position)])
+        light.SetFocalPoint([c + radius * f for c, f in zip(center, focal)])
