@@ -105,8 +105,6 @@ void vtkPhongFloatRenderPass::Render(const vtkRenderState* s)
     vtkErrorMacro("vtkPhongFloatRenderPass needs an OpenGL render window.");
     return;
   }
-  vtkOpenGLState* state = window->GetState();
-
   int width = 0;
   int height = 0;
   int x = 0;
@@ -116,7 +114,20 @@ void vtkPhongFloatRenderPass::Render(const vtkRenderState* s)
   {
     return;
   }
+  this->PrepareFloatTarget(window, width, height);
+  this->RenderAndReadBack(s, window, width, height);
+  if (this->CopyToWindow)
+  {
+    this->ShowInWindow(s, x, y, width, height);
+  }
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
 
+//------------------------------------------------------------------------------
+// An RGBA32F texture of the viewport's size and the framebuffer that draws into it.
+void vtkPhongFloatRenderPass::PrepareFloatTarget(
+  vtkOpenGLRenderWindow* window, int width, int height)
+{
   if (!this->ColorTexture)
   {
     this->ColorTexture = vtkTextureObject::New();
@@ -132,7 +143,13 @@ void vtkPhongFloatRenderPass::Render(const vtkRenderState* s)
     this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
     this->FrameBufferObject->SetContext(window);
   }
+}
 
+//------------------------------------------------------------------------------
+// The delegate draws into the float target; its colour and depth become FloatImage.
+void vtkPhongFloatRenderPass::RenderAndReadBack(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height)
+{
   vtkNew<vtkFloatArray> rgba;
   rgba->SetName("RGBA");
   rgba->SetNumberOfComponents(4);
@@ -141,6 +158,7 @@ void vtkPhongFloatRenderPass::Render(const vtkRenderState* s)
   depth->SetName("Depth");
   depth->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
   {
+    vtkOpenGLState* state = window->GetState();
     vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
     if (!this->Blending)
@@ -148,8 +166,8 @@ void vtkPhongFloatRenderPass::Render(const vtkRenderState* s)
       state->vtkglDisable(GL_BLEND);
     }
     state->PushFramebufferBindings();
-    // The delegate draws into the float target with the renderer's camera and a depth buffer
-    // of its own; the framebuffer stays bound afterwards.
+    // The delegate draws with the renderer's camera and a depth buffer of its own; the
+    // framebuffer stays bound afterwards.
     this->RenderDelegate(
       s, width, height, width, height, this->FrameBufferObject, this->ColorTexture);
     this->FrameBufferObject->ActivateReadBuffer(0);
@@ -158,18 +176,11 @@ void vtkPhongFloatRenderPass::Render(const vtkRenderState* s)
     glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth->GetPointer(0));
     state->PopFramebufferBindings();
   }
-
   this->FloatImage->Initialize();
   this->FloatImage->SetDimensions(width, height, 1);
   this->FloatImage->GetPointData()->SetScalars(rgba);
   this->FloatImage->GetPointData()->AddArray(depth);
   this->FloatImage->Modified();
-
-  if (this->CopyToWindow)
-  {
-    this->ShowInWindow(s, x, y, width, height);
-  }
-  vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
 //------------------------------------------------------------------------------

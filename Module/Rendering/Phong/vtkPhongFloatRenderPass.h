@@ -38,6 +38,7 @@
 #include "vtkRenderingPhongModule.h" // for export macro
 
 class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
 class vtkOpenGLQuadHelper;
 class vtkTextureObject;
 
@@ -86,6 +87,9 @@ protected:
   vtkPhongFloatRenderPass();
   ~vtkPhongFloatRenderPass() override;
 
+  void PrepareFloatTarget(vtkOpenGLRenderWindow* window, int width, int height);
+  void RenderAndReadBack(
+    const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height);
   void ShowInWindow(const vtkRenderState* s, int x, int y, int width, int height);
 
   bool Blending = false;

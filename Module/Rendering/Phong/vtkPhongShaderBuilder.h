@@ -3,21 +3,26 @@
  * @brief   plans, writes and feeds the lighting shaders of the vtkPhong mappers
  *
  * vtkPhongShaderBuilder holds the one implementation of the lighting model of
- * docs/lighting-model.md on the GPU. A mapper (vtkPhongPolyDataMapper, or a composite helper)
- * calls it at three points of VTK's shader life cycle:
+ * docs/lighting-model.md on the GPU. A mapper (vtkPhongPolyDataMapper, or a composite helper,
+ * through vtkPhongMapperCore) calls it at three points of VTK's shader life cycle, one concern
+ * each, as VTK's mapper splits ReplaceShaderColor/Normal/Light:
  *
- * 1. MakePlan(): for the primitive about to be drawn, decide which code the shader needs (the
- *    light kinds and counts present, the terms with non-zero coefficients, the lobe, the
- *    interpolation, the debug view) and summarise it in a signature. Equal signatures mean
+ * 1. MakePlan() (vtkPhongShaderPlanner): for the primitive about to be drawn, decide which
+ *    code the shader needs (the light kinds and counts present, the terms with non-zero
+ *    coefficients, the lobe, the interpolation, the debug view) as typed features
+ *    (vtkPhongShaderFeatures.h), and summarise them in a signature. Equal signatures mean
  *    identical lighting code, so the mapper rebuilds its shader only when the signature
  *    changes; values (colours, intensities, positions) are uniforms and never recompile.
- * 2. ReplaceShaderValues(): substitute VTK's //VTK::Light::* tags (and UniformFlow, TCoord in
- *    the fragment shader) with the GLSL of Module/Rendering/Phong/glsl/, keeping only the sections the plan
- *    needs.
- * 3. SetLightUniforms() / SetMaterialUniforms(): upload the light and material values.
+ * 2. ReplaceShaderValues() (vtkPhongShaderTemplate): substitute VTK's //VTK::Light::* tags
+ *    (and UniformFlow, TCoord in the fragment shader) with the GLSL templates of glsl/,
+ *    keeping only the sections the plan needs.
+ * 3. SetLightUniforms() (vtkPhongLightUniforms) / SetMaterialUniforms()
+ *    (vtkPhongMaterialUniforms): upload the light and material values.
  *
- * Primitives the model does not cover (PBR, the vertex-visibility pass, VTK's lighting map
- * passes) get Plan::Handled = false and keep VTK's own shader code.
+ * Bad parameters met on the way are substituted as documented and collected once each
+ * (vtkPhongProblemLog) for the mapper to report. Primitives the model does not cover (PBR,
+ * the vertex-visibility pass, VTK's lighting map passes) get Plan::Handled = false and keep
+ * VTK's own shader code.
  *
  * Not wrapped: the mapper is the Python-facing API.
  *
@@ -30,15 +35,17 @@
 #include "vtkLight.h" // for vtkNew<vtkLight>
 #include "vtkNew.h"   // for vtkNew
 #include "vtkObject.h"
+#include "vtkPhongShaderFeatures.h"  // for vtkPhongFeatureSet
 #include "vtkRenderingPhongModule.h" // for export macro
 #include "vtkShader.h"               // for vtkShader::Type
 
 #include <map>    // for std::map
-#include <set>    // for std::set
+#include <memory> // for std::unique_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
 
 class vtkActor;
+class vtkPhongProblemLog;
 class vtkProperty;
 class vtkRenderer;
 class vtkShaderProgram;
@@ -85,7 +92,7 @@ public:
   struct Plan
   {
     bool Handled = false; ///< false: VTK's own lighting code is used
-    std::set<std::string> Flags;
+    vtkPhongFeatureSet Features;
     std::string Signature;
     std::vector<vtkLight*> DirectionalLights;
     std::vector<vtkLight*> PointLights;
@@ -94,7 +101,7 @@ public:
     vtkProperty* FrontMaterial = nullptr;
     vtkProperty* BackMaterial = nullptr; ///< the front material when there is no back one
     int DebugView = 0;                   ///< a vtkPhongPolyDataMapper::DebugViews value
-    bool Has(const char* flag) const { return this->Flags.count(flag) != 0; }
+    bool Has(vtkPhongFeature feature) const { return this->Features.Has(feature); }
   };
 
   /**
@@ -129,13 +136,14 @@ public:
 
   /**
    * Keep, from a GLSL template, the lines of the named section whose //PHONG_IF conditions
-   * hold for the plan, with @NAME@ placeholders filled in. Public for tests.
+   * hold for the plan, with @NAME@ placeholders filled in (vtkPhongShaderTemplate). Public
+   * for tests.
    */
   std::string ResolveTemplate(const char* templateText, const char* section, const Plan& plan);
 
   /**
-   * The embedded GLSL template of a file of Module/Rendering/Phong/glsl by its name without extension
-   * (vtkPhongLightingLib, vtkPhongFS, vtkPhongVS, vtkPhongGS); nullptr for another name.
+   * The embedded GLSL template of a file of Module/Rendering/Phong/glsl by its name without
+   * extension (vtkPhongLightingLib, vtkPhongFS, vtkPhongVS, vtkPhongGS); nullptr for another name.
    */
   static const char* GetTemplate(const char* name);
 
@@ -143,8 +151,7 @@ protected:
   vtkPhongShaderBuilder();
   ~vtkPhongShaderBuilder() override;
 
-  void AddProblem(const std::string& problem);
-  std::set<std::string> Problems;
+  std::unique_ptr<vtkPhongProblemLog> Log;
 
   // Lights that contribute nothing (intensity 0), standing in for the light kinds a scene
   // lacks in the all-features variant, whose code needs at least one light of each kind.

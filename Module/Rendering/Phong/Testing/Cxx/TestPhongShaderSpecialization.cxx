@@ -153,15 +153,17 @@ int TestPhongShaderSpecialization(int, char*[])
   vtkNew<vtkPhongShaderBuilder> builder;
   vtkPhongTest::ErrorCollector errors;
   errors.Observe(builder);
-  const std::vector<std::vector<const char*>> flagSets = {
+  using F = vtkPhongFeature;
+  const std::vector<std::vector<vtkPhongFeature>> flagSets = {
     {},
-    { "AMBIENT", "DIFFUSE", "SPECULAR", "DIFFUSE_OR_SPECULAR", "EMISSION", "POSITIONAL_AMBIENT",
-      "LIGHT_SUMS", "DIRECTIONAL", "POINT", "SPOT", "POSITIONAL", "LOBE_PHONG", "SMOOTH_TERMINATOR",
-      "SOFT_SPOT_EDGE", "PARALLEL", "PER_VERTEX", "SUMS_PER_VERTEX", "TWO_SIDED", "BACK_MATERIAL",
-      "SHADING_NORMAL", "NORMAL_FALLBACK", "VIEW_VECTOR", "DEBUG_NORMAL", "POINT_ATTENUATION",
-      "SPOT_ATTENUATION", "ATTENUATION", "SPOT_FALLOFF", "DEBUG_NORMAL_VC", "DEBUG_POSITION_VC" },
-    { "DIFFUSE", "LIGHT_SUMS", "DIRECTIONAL", "SUMS_PER_FRAGMENT", "SHADING_NORMAL", "ONE_SIDED",
-      "VIEW_VECTOR", "LOBE_BLINN", "SPECULAR" },
+    { F::Ambient, F::Diffuse, F::Specular, F::DiffuseOrSpecular, F::Emission, F::PositionalAmbient,
+      F::LightSums, F::Directional, F::Point, F::Spot, F::Positional, F::LobePhong,
+      F::SmoothTerminator, F::SoftSpotEdge, F::Parallel, F::PerVertex, F::SumsPerVertex,
+      F::TwoSided, F::BackMaterial, F::ShadingNormal, F::NormalFallback, F::ViewVector,
+      F::DebugNormal, F::PointAttenuation, F::SpotAttenuation, F::Attenuation, F::SpotFalloff,
+      F::DebugNormalVC, F::DebugPositionVC },
+    { F::Diffuse, F::LightSums, F::Directional, F::SumsPerFragment, F::ShadingNormal, F::OneSided,
+      F::ViewVector, F::LobeBlinn, F::Specular },
   };
   const char* sections[][2] = { { "vtkPhongLightingLib", "Sums" },
     { "vtkPhongLightingLib", "Lights" }, { "vtkPhongFS", "Dec" }, { "vtkPhongFS", "UniformFlow" },
@@ -170,7 +172,10 @@ int TestPhongShaderSpecialization(int, char*[])
   for (const auto& flags : flagSets)
   {
     vtkPhongShaderBuilder::Plan plan;
-    plan.Flags.insert(flags.begin(), flags.end());
+    for (vtkPhongFeature feature : flags)
+    {
+      plan.Features.Set(feature);
+    }
     for (const auto& section : sections)
     {
       const std::string code =
@@ -180,5 +185,11 @@ int TestPhongShaderSpecialization(int, char*[])
     }
   }
   checks.Expect(errors.Messages.empty(), "the templates are well formed");
+
+  // A feature name the module does not know is an error, not a silent no-op.
+  builder->ResolveTemplate("//PHONG_SECTION Probe\n//PHONG_IF SPECULR\nx\n//PHONG_ENDIF\n", "Probe",
+    vtkPhongShaderBuilder::Plan());
+  checks.Expect(errors.Messages.size() == 1 && Has(errors.Messages[0], "SPECULR"),
+    "a misspelt feature in a template is reported");
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,0 +1,395 @@
+#include "vtkPhongLightUniforms.h"
+
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkPhongMaterialUniforms.h"
+#include "vtkPhongPolyDataMapper.h"
+#include "vtkPhongProblemLog.h"
+#include "vtkPhongProperty.h"
+#include "vtkPhongShaderPlanner.h"
+#include "vtkShaderProgram.h"
+#include "vtkTransform.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+using Feature = vtkPhongFeature;
+
+const char* LightKindName(vtkLight* light)
+{
+  if (light->LightTypeIsHeadlight())
+  {
+    return "headlight";
+  }
+  return light->LightTypeIsCameraLight() ? "camera light" : "scene light";
+}
+
+template <typename T>
+void AppendRGB(std::vector<float>& packed, const T& rgb)
+{
+  packed.insert(packed.end(),
+    { static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]) });
+}
+
+void SetVec3Array(
+  vtkShaderProgram* program, const std::string& name, const std::vector<float>& values)
+{
+  if (!values.empty())
+  {
+    program->SetUniform3fv(name.c_str(), static_cast<int>(values.size() / 3),
+      reinterpret_cast<const float(*)[3]>(values.data()));
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkPhongLightUniforms::vtkPhongLightUniforms(
+  vtkShaderProgram* program, vtkRenderer* ren, const Plan& plan, vtkPhongProblemLog& log)
+  : Program(program)
+  , Renderer(ren)
+  , ThePlan(plan)
+  , Log(log)
+{
+  this->WorldToView = ren->GetActiveCamera()->GetModelViewTransformMatrix();
+  vtkOpenGLRenderer* oglRenderer = vtkOpenGLRenderer::SafeDownCast(ren);
+  this->UserTransform = oglRenderer ? oglRenderer->GetUserLightTransform() : nullptr;
+  int index = 0;
+  for (vtkLight* light : vtkPhongShaderPlanner::SwitchedOnLights(ren))
+  {
+    this->LightIndex[light] = index++;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightUniforms::Upload()
+{
+  this->ReadSceneAmbient();
+  this->UploadDirectional();
+  this->UploadAmbient();
+  if (this->ThePlan.Has(Feature::Point))
+  {
+    this->UploadPositional(this->ThePlan.PointLights, "phongPointLight", false);
+  }
+  if (this->ThePlan.Has(Feature::Spot))
+  {
+    this->UploadPositional(this->ThePlan.SpotLights, "phongSpotLight", true);
+  }
+  this->UploadEmission();
+}
+
+//------------------------------------------------------------------------------
+// The light's index among the renderer's switched-on lights (0 for the all-features
+// variant's placeholders, which are not the renderer's).
+int vtkPhongLightUniforms::IndexOf(vtkLight* light) const
+{
+  auto found = this->LightIndex.find(light);
+  return found == this->LightIndex.end() ? 0 : found->second;
+}
+
+//------------------------------------------------------------------------------
+// A light's colours times its intensity, zero for lights hidden by the single-light view.
+vtkPhongLightUniforms::LightValues vtkPhongLightUniforms::ValuesOf(vtkLight* light)
+{
+  LightValues values;
+  if (this->ThePlan.DebugView == vtkPhongPolyDataMapper::SingleLight &&
+    light != this->ThePlan.DebugLight)
+  {
+    return values;
+  }
+  const double intensity = this->Log.NonNegative(light->GetIntensity(),
+    [&](std::ostream& os)
+    {
+      os << "Light " << this->IndexOf(light) << " (" << LightKindName(light) << ") has intensity "
+         << light->GetIntensity()
+         << "; lights need a finite intensity >= 0, so it is treated as 0.";
+    });
+  values.Ambient = this->ScaledColor(light, light->GetAmbientColor(), intensity, "ambient");
+  values.Diffuse = this->ScaledColor(light, light->GetDiffuseColor(), intensity, "diffuse");
+  values.Specular = this->ScaledColor(light, light->GetSpecularColor(), intensity, "specular");
+  return values;
+}
+
+//------------------------------------------------------------------------------
+vtkPhongLightUniforms::RGB vtkPhongLightUniforms::ScaledColor(
+  vtkLight* light, const double* color, double intensity, const char* which)
+{
+  RGB scaled;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double value = this->Log.NonNegative(color[c],
+      [&](std::ostream& os)
+      {
+        os << "Light " << this->IndexOf(light) << " (" << LightKindName(light) << ") has " << which
+           << " colour component " << color[c]
+           << "; colours must be finite and >= 0, so it is treated as 0.";
+      });
+    scaled[c] = static_cast<float>(value * intensity);
+  }
+  return scaled;
+}
+
+//------------------------------------------------------------------------------
+vtkPhongLightUniforms::LightGeometry vtkPhongLightUniforms::GeometryOf(vtkLight* light) const
+{
+  double position[4] = { 0.0, 0.0, 0.0, 1.0 };
+  double focalPoint[4] = { 0.0, 0.0, 0.0, 1.0 };
+  light->GetTransformedPosition(position);
+  light->GetTransformedFocalPoint(focalPoint);
+  double positionVC[4];
+  this->WorldToView->MultiplyPoint(position, positionVC);
+  double direction[3];
+  vtkMath::Subtract(focalPoint, position, direction);
+  double directionVC[3];
+  for (int row = 0; row < 3; ++row)
+  {
+    directionVC[row] = this->WorldToView->GetElement(row, 0) * direction[0] +
+      this->WorldToView->GetElement(row, 1) * direction[1] +
+      this->WorldToView->GetElement(row, 2) * direction[2];
+  }
+  // VTK applies its user light transform (used in VR) to all but scene lights.
+  if (this->UserTransform && !light->LightTypeIsSceneLight())
+  {
+    this->UserTransform->TransformPoint(positionVC, positionVC);
+    this->UserTransform->TransformVector(directionVC, directionVC);
+  }
+  LightGeometry geometry;
+  for (int i = 0; i < 3; ++i)
+  {
+    geometry.PositionVC[i] = positionVC[i] / (positionVC[3] != 0.0 ? positionVC[3] : 1.0);
+  }
+  const double length = vtkMath::Norm(directionVC);
+  geometry.HasDirection = length > 0.0 && std::isfinite(length);
+  if (geometry.HasDirection)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      geometry.DirectionVC[i] = directionVC[i] / length;
+    }
+  }
+  return geometry;
+}
+
+//------------------------------------------------------------------------------
+// Ia, the renderer's ambient light (none in the single-light view).
+void vtkPhongLightUniforms::ReadSceneAmbient()
+{
+  if (this->ThePlan.DebugView == vtkPhongPolyDataMapper::SingleLight)
+  {
+    return;
+  }
+  const double* ia = this->Renderer->GetAmbient();
+  for (int c = 0; c < 3; ++c)
+  {
+    this->AmbientLight[c] = this->Log.NonNegative(ia[c],
+      [&](std::ostream& os)
+      {
+        os << "The renderer's ambient light component " << ia[c]
+           << " is not a finite value >= 0; it is treated as 0.";
+      });
+  }
+}
+
+//------------------------------------------------------------------------------
+// Directional lights: the direction towards the light, the colours, and their ambient
+// colours added to the ambient light, which is the same everywhere.
+void vtkPhongLightUniforms::UploadDirectional()
+{
+  std::vector<float> toLight, diffuse, specular;
+  for (vtkLight* light : this->ThePlan.DirectionalLights)
+  {
+    const LightValues values = this->ValuesOf(light);
+    for (int c = 0; c < 3; ++c)
+    {
+      this->AmbientLight[c] += values.Ambient[c];
+    }
+    const LightGeometry geometry = this->GeometryOf(light);
+    if (!geometry.HasDirection)
+    {
+      this->Log.Report(
+        [&](std::ostream& os)
+        {
+          os << "Directional light " << this->IndexOf(light) << " (" << LightKindName(light)
+             << ") has its focal point at its position and so no direction; it shines "
+                "along the view direction.";
+        });
+    }
+    const double towardsLight[3] = { -geometry.DirectionVC[0], -geometry.DirectionVC[1],
+      -geometry.DirectionVC[2] };
+    AppendRGB(toLight, towardsLight);
+    AppendRGB(diffuse, values.Diffuse);
+    AppendRGB(specular, values.Specular);
+  }
+  if (this->ThePlan.Has(Feature::Directional))
+  {
+    SetVec3Array(this->Program, "phongDirectionalLightToLightVC", toLight);
+    SetVec3Array(this->Program, "phongDirectionalLightDiffuse", diffuse);
+    SetVec3Array(this->Program, "phongDirectionalLightSpecular", specular);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightUniforms::UploadAmbient()
+{
+  if (this->Program->IsUniformUsed("phongAmbientLight"))
+  {
+    this->Program->SetUniform3f("phongAmbientLight", this->AmbientLight);
+  }
+  if (this->Program->IsUniformUsed("phongAmbientTerm"))
+  {
+    // ka*Ca times that light, the material's values as vtkPhongMaterialUniforms checks (and
+    // reports) them.
+    vtkProperty* material = this->ThePlan.FrontMaterial;
+    float term[3];
+    vtkPhongMaterialUniforms::FiniteProduct(
+      material->GetAmbient(), material->GetAmbientColor(), this->AmbientLight, term);
+    this->Program->SetUniform3f("phongAmbientTerm", term);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Attenuation coefficients as uploaded: finite and >= 0.
+vtkPhongLightUniforms::RGB vtkPhongLightUniforms::AttenuationOf(vtkLight* light)
+{
+  RGB attenuation;
+  const double* values = light->GetAttenuationValues();
+  for (int c = 0; c < 3; ++c)
+  {
+    attenuation[c] = static_cast<float>(this->Log.NonNegative(values[c],
+      [&](std::ostream& os)
+      {
+        os << "Positional light " << this->IndexOf(light) << " has attenuation coefficient "
+           << values[c] << "; coefficients must be finite and >= 0, so it is treated as 0.";
+      }));
+  }
+  return attenuation;
+}
+
+//------------------------------------------------------------------------------
+// A spot's axis, cone, falloff exponent and soft edge.
+void vtkPhongLightUniforms::AddSpot(
+  vtkLight* light, const LightGeometry& geometry, PositionalArrays& arrays)
+{
+  if (!geometry.HasDirection)
+  {
+    this->Log.Report(
+      [&](std::ostream& os)
+      {
+        os << "Spot light " << this->IndexOf(light)
+           << " has its focal point at its position and so no axis; it points along "
+              "the view direction.";
+      });
+  }
+  AppendRGB(arrays.AxisVC, geometry.DirectionVC);
+  const double cone = std::max(light->GetConeAngle(), 0.0);
+  arrays.CosCutoff.push_back(static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone))));
+  arrays.Exponent.push_back(static_cast<float>(this->Log.NonNegative(light->GetExponent(),
+    [&](std::ostream& os)
+    {
+      os << "Spot light " << this->IndexOf(light) << " has exponent " << light->GetExponent()
+         << "; spot exponents must be finite and >= 0, so it is treated as 0.";
+    })));
+  // Without the soft edge option the band has no width (a hard edge), also in the
+  // all-features variant, which evaluates the smoothstep anyway.
+  auto* phongFront = vtkPhongProperty::SafeDownCast(this->ThePlan.FrontMaterial);
+  const double edgeWidth =
+    (phongFront && phongFront->GetSoftSpotEdge()) ? phongFront->GetSpotEdgeWidth() : 0.0;
+  // smoothstep needs its two edges apart; a zero-width band is a hard edge.
+  const double inner = std::cos(vtkMath::RadiansFromDegrees(std::max(cone - edgeWidth, 0.0)));
+  arrays.CosInner.push_back(static_cast<float>(std::max(inner, arrays.CosCutoff.back() + 1.0e-6)));
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightUniforms::UploadPositional(
+  const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot)
+{
+  PositionalArrays arrays;
+  for (vtkLight* light : lights)
+  {
+    const LightValues values = this->ValuesOf(light);
+    const LightGeometry geometry = this->GeometryOf(light);
+    AppendRGB(arrays.PositionVC, geometry.PositionVC);
+    AppendRGB(arrays.Attenuation, this->AttenuationOf(light));
+    AppendRGB(arrays.Ambient, values.Ambient);
+    AppendRGB(arrays.Diffuse, values.Diffuse);
+    AppendRGB(arrays.Specular, values.Specular);
+    if (isSpot)
+    {
+      this->AddSpot(light, geometry, arrays);
+    }
+  }
+  const std::string name(prefix);
+  const Plan& plan = this->ThePlan;
+  SetVec3Array(this->Program, name + "PositionVC", arrays.PositionVC);
+  if (plan.Has(isSpot ? Feature::SpotAttenuation : Feature::PointAttenuation))
+  {
+    SetVec3Array(this->Program, name + "Attenuation", arrays.Attenuation);
+  }
+  if (plan.Has(Feature::PositionalAmbient))
+  {
+    SetVec3Array(this->Program, name + "Ambient", arrays.Ambient);
+  }
+  if (plan.Has(Feature::Diffuse))
+  {
+    SetVec3Array(this->Program, name + "Diffuse", arrays.Diffuse);
+  }
+  if (plan.Has(Feature::Specular))
+  {
+    SetVec3Array(this->Program, name + "Specular", arrays.Specular);
+  }
+  if (isSpot)
+  {
+    this->UploadSpotArrays(name, arrays);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightUniforms::UploadSpotArrays(
+  const std::string& prefix, const PositionalArrays& arrays)
+{
+  const int count = static_cast<int>(arrays.CosCutoff.size());
+  SetVec3Array(this->Program, prefix + "AxisVC", arrays.AxisVC);
+  this->Program->SetUniform1fv((prefix + "CosCutoff").c_str(), count, arrays.CosCutoff.data());
+  if (this->ThePlan.Has(Feature::SpotFalloff))
+  {
+    this->Program->SetUniform1fv((prefix + "Exponent").c_str(), count, arrays.Exponent.data());
+  }
+  if (this->ThePlan.Has(Feature::SoftSpotEdge))
+  {
+    this->Program->SetUniform1fv((prefix + "CosInner").c_str(), count, arrays.CosInner.data());
+  }
+}
+
+//------------------------------------------------------------------------------
+// Ke of each side, and the back side's shininess (VTK has no uniform for it).
+void vtkPhongLightUniforms::UploadEmission()
+{
+  const Plan& plan = this->ThePlan;
+  if (plan.Has(Feature::Emission))
+  {
+    auto emissionOf = [](vtkProperty* material)
+    {
+      auto* phong = vtkPhongProperty::SafeDownCast(material);
+      RGB emission = { 0.f, 0.f, 0.f };
+      for (int c = 0; phong && c < 3; ++c)
+      {
+        emission[c] = static_cast<float>(phong->GetEmission()[c]);
+      }
+      return emission;
+    };
+    this->Program->SetUniform3f("phongEmission", emissionOf(plan.FrontMaterial).data());
+    if (plan.Has(Feature::BackMaterial))
+    {
+      this->Program->SetUniform3f("phongEmissionBF", emissionOf(plan.BackMaterial).data());
+    }
+  }
+  if (this->Program->IsUniformUsed("phongShininessBF"))
+  {
+    this->Program->SetUniformf("phongShininessBF",
+      static_cast<float>(vtkPhongMaterialUniforms::ShininessOf(plan.BackMaterial)));
+  }
+}

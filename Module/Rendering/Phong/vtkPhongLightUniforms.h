@@ -1,0 +1,92 @@
+/**
+ * @class   vtkPhongLightUniforms
+ * @brief   uploads a plan's light values: directional, positional, ambient and emission
+ *
+ * One of the two uniform halves of vtkPhongShaderBuilder (plan, template, uniforms). Light
+ * colours go up premultiplied by the light's intensity; directions and positions in view
+ * coordinates, computed in double precision so far-away scenes lose nothing before the final
+ * cast to float; the ambient light Ia plus the directional lights' ambient colours as one sum.
+ * Non-finite or negative parameters are uploaded as 0 and reported once (vtkPhongProblemLog).
+ * The single-light debug view zeroes every light but the one shown.
+ *
+ * Private to the module.
+ *
+ * @sa vtkPhongShaderBuilder vtkPhongMaterialUniforms
+ */
+
+#ifndef vtkPhongLightUniforms_h
+#define vtkPhongLightUniforms_h
+
+#include "vtkPhongShaderBuilder.h" // for Plan
+
+#include <array>  // for std::array
+#include <map>    // for std::map
+#include <vector> // for std::vector
+
+class vtkMatrix4x4;
+class vtkPhongProblemLog;
+class vtkShaderProgram;
+class vtkTransform;
+
+class vtkPhongLightUniforms
+{
+public:
+  using Plan = vtkPhongShaderBuilder::Plan;
+
+  vtkPhongLightUniforms(
+    vtkShaderProgram* program, vtkRenderer* ren, const Plan& plan, vtkPhongProblemLog& log);
+
+  void Upload();
+
+private:
+  using RGB = std::array<float, 3>;
+
+  // Colours times intensity, as uploaded.
+  struct LightValues
+  {
+    RGB Ambient = { 0.f, 0.f, 0.f };
+    RGB Diffuse = { 0.f, 0.f, 0.f };
+    RGB Specular = { 0.f, 0.f, 0.f };
+  };
+
+  // A light's position and direction (from the light towards its focal point) in view
+  // coordinates.
+  struct LightGeometry
+  {
+    double PositionVC[3] = { 0.0, 0.0, 0.0 };
+    double DirectionVC[3] = { 0.0, 0.0, -1.0 };
+    bool HasDirection = true;
+  };
+
+  // The uniform arrays of one positional light kind, a light after another.
+  struct PositionalArrays
+  {
+    std::vector<float> PositionVC, Attenuation, Ambient, Diffuse, Specular;
+    std::vector<float> AxisVC, CosCutoff, Exponent, CosInner; ///< spots only
+  };
+
+  LightValues ValuesOf(vtkLight* light);
+  RGB ScaledColor(vtkLight* light, const double* color, double intensity, const char* which);
+  LightGeometry GeometryOf(vtkLight* light) const;
+  int IndexOf(vtkLight* light) const;
+  void ReadSceneAmbient();
+  void UploadDirectional();
+  void UploadAmbient();
+  RGB AttenuationOf(vtkLight* light);
+  void AddSpot(vtkLight* light, const LightGeometry& geometry, PositionalArrays& arrays);
+  void UploadPositional(const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot);
+  void UploadSpotArrays(const std::string& prefix, const PositionalArrays& arrays);
+  void UploadEmission();
+
+  vtkShaderProgram* Program;
+  vtkRenderer* Renderer;
+  const Plan& ThePlan;
+  vtkPhongProblemLog& Log;
+  vtkMatrix4x4* WorldToView = nullptr;
+  vtkTransform* UserTransform = nullptr; ///< VTK's user light transform (VR), or none
+  std::map<vtkLight*, int> LightIndex;   ///< as the renderer lists its lights, for messages
+  double AmbientLight[3] = { 0.0, 0.0, 0.0 };
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkPhongLightUniforms.h

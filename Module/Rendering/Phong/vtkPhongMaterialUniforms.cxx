@@ -1,0 +1,171 @@
+#include "vtkPhongMaterialUniforms.h"
+
+#include "vtkPhongProblemLog.h"
+#include "vtkPhongProperty.h"
+#include "vtkProperty.h"
+#include "vtkShaderProgram.h"
+
+#include <cmath>
+
+//------------------------------------------------------------------------------
+vtkPhongMaterialUniforms::vtkPhongMaterialUniforms(
+  vtkShaderProgram* program, const Plan& plan, vtkPhongProblemLog& log)
+  : Program(program)
+  , ThePlan(plan)
+  , Log(log)
+{
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongMaterialUniforms::ShininessOf(vtkProperty* material)
+{
+  auto* phong = vtkPhongProperty::SafeDownCast(material);
+  return phong ? phong->GetShininess() : material->GetSpecularPower();
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongMaterialUniforms::LightingModelOf(vtkProperty* material)
+{
+  auto* phong = vtkPhongProperty::SafeDownCast(material);
+  return phong ? phong->GetLightingModel() : vtkPhongProperty::Phong;
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongMaterialUniforms::LobeNormalization(int lightingModel, double shininess)
+{
+  switch (lightingModel)
+  {
+    case vtkPhongProperty::NormalizedPhong:
+      return (shininess + 2.0) / 2.0;
+    case vtkPhongProperty::NormalizedBlinnPhong:
+      return (shininess + 8.0) / 8.0;
+    default:
+      return 1.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMaterialUniforms::FiniteProduct(
+  double coefficient, const double color[3], const double scale[3], float product[3])
+{
+  const double k = std::isfinite(coefficient) ? coefficient : 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    product[c] = static_cast<float>(k * (std::isfinite(color[c]) ? color[c] : 0.0) * scale[c]);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMaterialUniforms::Upload()
+{
+  this->UploadSide(this->ThePlan.FrontMaterial, "", true);
+  this->UploadProducts();
+  // VTK declares back-face uniforms when the actor has a back property; with one-sided
+  // lighting the contract uses the front material on both faces.
+  this->UploadSide(
+    this->ThePlan.BackMaterial, "BF", this->ThePlan.BackMaterial != this->ThePlan.FrontMaterial);
+}
+
+//------------------------------------------------------------------------------
+// The selection of material per face is VTK's (Color::Impl); only values change here. Every
+// value is checked (and a problem reported) whether or not the variant reads it.
+void vtkPhongMaterialUniforms::UploadSide(vtkProperty* material, const char* suffix, bool report)
+{
+  this->Side = suffix;
+  this->SideName = this->Side.empty() ? "front" : "back";
+  this->Report = report;
+  const double shininess = ShininessOf(material);
+  const double normalization =
+    LobeNormalization(LightingModelOf(this->ThePlan.FrontMaterial), shininess);
+
+  const RGB ambientColor = this->CheckedColor(material->GetAmbientColor(), 1.0, "ambient");
+  const RGB diffuseColor = this->CheckedColor(material->GetDiffuseColor(), 1.0, "diffuse");
+  const RGB specularColor =
+    this->CheckedColor(material->GetSpecularColor(), normalization, "specular");
+  const float opacity = this->CheckedCoefficient(material->GetOpacity(), "opacity");
+  const float ambient = this->CheckedCoefficient(material->GetAmbient(), "ambient");
+  const float diffuse = this->CheckedCoefficient(material->GetDiffuse(), "diffuse");
+  const float specular = this->CheckedCoefficient(material->GetSpecular(), "specular");
+  this->Set("ambientColorUniform", ambientColor);
+  this->Set("diffuseColorUniform", diffuseColor);
+  this->Set("opacityUniform", opacity);
+  this->Set("ambientIntensity", ambient);
+  this->Set("diffuseIntensity", diffuse);
+  if (this->ThePlan.Has(vtkPhongFeature::Specular))
+  {
+    this->Set("specularIntensity", specular);
+    this->Set("specularColorUniform", specularColor);
+    this->Set("specularPowerUniform", static_cast<float>(shininess));
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkPhongMaterialUniforms::RGB vtkPhongMaterialUniforms::CheckedColor(
+  const double* color, double scale, const char* which)
+{
+  RGB out;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double value = this->Log.Finite(color[c], this->Report,
+      [&](std::ostream& os)
+      {
+        os << "The " << this->SideName << " material's " << which << " colour component "
+           << color[c] << " is not finite; it is treated as 0.";
+      });
+    out[c] = static_cast<float>(value * scale);
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+float vtkPhongMaterialUniforms::CheckedCoefficient(double value, const char* which)
+{
+  return static_cast<float>(this->Log.Finite(value, this->Report,
+    [&](std::ostream& os)
+    {
+      os << "The " << this->SideName << " material's " << which << " coefficient " << value
+         << " is not finite; it is treated as 0.";
+    }));
+}
+
+//------------------------------------------------------------------------------
+// The ready-made products of MATERIAL_UNIFORMS (front material only: that variant has no
+// back material).
+void vtkPhongMaterialUniforms::UploadProducts()
+{
+  vtkProperty* front = this->ThePlan.FrontMaterial;
+  const double specularScale = LobeNormalization(LightingModelOf(front), ShininessOf(front));
+  auto product = [&](const char* name, double coefficient, const double* color, double scale)
+  {
+    if (this->Program->IsUniformUsed(name))
+    {
+      const double scales[3] = { scale, scale, scale };
+      float value[3];
+      FiniteProduct(coefficient, color, scales, value);
+      this->Program->SetUniform3f(name, value);
+    }
+  };
+  product("phongMaterialAmbient", front->GetAmbient(), front->GetAmbientColor(), 1.0);
+  product("phongMaterialDiffuse", front->GetDiffuse(), front->GetDiffuseColor(), 1.0);
+  product("phongMaterialSpecular", front->GetSpecular(), front->GetSpecularColor(), specularScale);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMaterialUniforms::Set(const char* name, const RGB& value)
+{
+  const std::string uniform = name + this->Side;
+  if (this->Program->IsUniformUsed(uniform.c_str()))
+  {
+    this->Program->SetUniform3f(uniform.c_str(), value.data());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMaterialUniforms::Set(const char* name, float value)
+{
+  const std::string uniform = name + this->Side;
+  if (this->Program->IsUniformUsed(uniform.c_str()))
+  {
+    this->Program->SetUniformf(uniform.c_str(), value);
+  }
+}

@@ -1,0 +1,79 @@
+/**
+ * @class   vtkPhongMaterialUniforms
+ * @brief   uploads a plan's material values: the contract's, where VTK's differ
+ *
+ * One of the two uniform halves of vtkPhongShaderBuilder (plan, template, uniforms). VTK's
+ * mapper has already uploaded the material of each side (SetPropertyShaderParameters); this
+ * replaces what the lighting contract defines otherwise: the shininess unclamped (VTK clamps
+ * SpecularPower to 128), the specular colour times the lobe's energy normalization, non-finite
+ * colours and coefficients as 0 (reported once), the front material on both faces with
+ * one-sided lighting, and the ready-made products k*C of the MATERIAL_UNIFORMS variant.
+ *
+ * Private to the module.
+ *
+ * @sa vtkPhongShaderBuilder vtkPhongLightUniforms
+ */
+
+#ifndef vtkPhongMaterialUniforms_h
+#define vtkPhongMaterialUniforms_h
+
+#include "vtkPhongShaderBuilder.h" // for Plan
+
+#include <array> // for std::array
+
+class vtkPhongProblemLog;
+class vtkShaderProgram;
+
+class vtkPhongMaterialUniforms
+{
+public:
+  using Plan = vtkPhongShaderBuilder::Plan;
+
+  vtkPhongMaterialUniforms(vtkShaderProgram* program, const Plan& plan, vtkPhongProblemLog& log);
+
+  void Upload();
+
+  /**
+   * vtkPhongProperty's shininess (unclamped), else VTK's specular power.
+   */
+  static double ShininessOf(vtkProperty* material);
+
+  /**
+   * vtkPhongProperty's lighting model, else vtkPhongProperty::Phong (VTK's lobe).
+   */
+  static int LightingModelOf(vtkProperty* material);
+
+  /**
+   * The energy normalization of the lobe, folded into the specular colour on the CPU.
+   */
+  static double LobeNormalization(int lightingModel, double shininess);
+
+  /**
+   * product = coefficient * color * scale per channel, non-finite coefficients and colour
+   * components taken as 0.
+   */
+  static void FiniteProduct(
+    double coefficient, const double color[3], const double scale[3], float product[3]);
+
+private:
+  using RGB = std::array<float, 3>;
+
+  void UploadSide(vtkProperty* material, const char* suffix, bool report);
+  RGB CheckedColor(const double* color, double scale, const char* which);
+  float CheckedCoefficient(double value, const char* which);
+  void UploadProducts();
+  void Set(const char* name, const RGB& value);
+  void Set(const char* name, float value);
+
+  vtkShaderProgram* Program;
+  const Plan& ThePlan;
+  vtkPhongProblemLog& Log;
+  // The side being uploaded: its uniform name suffix, its name in messages, and whether its
+  // problems are reported (the back side is the front material with one-sided lighting).
+  std::string Side;
+  const char* SideName = "front";
+  bool Report = true;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkPhongMaterialUniforms.h

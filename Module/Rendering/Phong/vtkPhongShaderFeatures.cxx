@@ -1,0 +1,52 @@
+#include "vtkPhongShaderFeatures.h"
+
+#include <array>
+
+namespace
+{
+// In the order of vtkPhongFeature.
+constexpr std::array<const char*, static_cast<std::size_t>(vtkPhongFeature::Count)> FeatureNames = {
+  "AMBIENT", "ATTENUATION", "BACK_MATERIAL", "DEBUG_NORMAL", "DEBUG_NORMAL_VC", "DEBUG_POSITION_VC",
+  "DIFFUSE", "DIFFUSE_OR_SPECULAR", "DIRECTIONAL", "EMISSION", "GEOMETRY_PASS_THROUGH",
+  "LIGHT_SUMS", "LOBE_BLINN", "LOBE_PHONG", "MATERIAL_UNIFORMS", "NORMAL_FALLBACK", "ONE_SIDED",
+  "PARALLEL", "PER_VERTEX", "POINT", "POINT_ATTENUATION", "POSITIONAL", "POSITIONAL_AMBIENT",
+  "SHADING_NORMAL", "SMOOTH_TERMINATOR", "SOFT_SPOT_EDGE", "SPECULAR", "SPOT", "SPOT_ATTENUATION",
+  "SPOT_FALLOFF", "SUMS_PER_FRAGMENT", "SUMS_PER_VERTEX", "TWO_SIDED", "VIEW_VECTOR"
+};
+static_assert(FeatureNames.back() != nullptr, "every vtkPhongFeature has a name");
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongFeatureSet::GetName(vtkPhongFeature feature)
+{
+  return FeatureNames[static_cast<std::size_t>(feature)];
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongFeatureSet::FindByName(const std::string& name, vtkPhongFeature& feature)
+{
+  for (std::size_t index = 0; index < FeatureNames.size(); ++index)
+  {
+    if (name == FeatureNames[index])
+    {
+      feature = static_cast<vtkPhongFeature>(index);
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPhongFeatureSet::GetNames() const
+{
+  std::string names;
+  for (std::size_t index = 0; index < FeatureNames.size(); ++index)
+  {
+    if (this->Bits.test(index))
+    {
+      names += FeatureNames[index];
+      names += ' ';
+    }
+  }
+  return names;
+}

@@ -1,0 +1,363 @@
+#include "vtkPhongShaderPlanner.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCollectionIterator.h"
+#include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkLightingMapPass.h"
+#include "vtkPhongMaterialUniforms.h"
+#include "vtkPhongPolyDataMapper.h"
+#include "vtkPhongProblemLog.h"
+#include "vtkPhongProperty.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+using View = vtkPhongPolyDataMapper; // for its DebugViews values
+using Feature = vtkPhongFeature;
+
+bool IsPositive(double value)
+{
+  return value > 0.0; // false for NaN too
+}
+
+// A light parameter as the uniforms upload it: finite and >= 0, else 0.
+double Sanitized(double value)
+{
+  return (value >= 0.0 && std::isfinite(value)) ? value : 0.0;
+}
+
+// Whether a light adds ambient light: its ambient colour times its intensity is not black.
+bool HasAmbientLight(vtkLight* light)
+{
+  const double* color = light->GetAmbientColor();
+  return IsPositive(Sanitized(light->GetIntensity())) &&
+    (IsPositive(Sanitized(color[0])) || IsPositive(Sanitized(color[1])) ||
+      IsPositive(Sanitized(color[2])));
+}
+
+// Whether a positional light fades with distance: (c, l, q) is not (1, 0, 0).
+bool IsAttenuated(vtkLight* light)
+{
+  const double* values = light->GetAttenuationValues();
+  return Sanitized(values[0]) != 1.0 || Sanitized(values[1]) != 0.0 || Sanitized(values[2]) != 0.0;
+}
+
+// Whether a spot's light falls off inside its cone: its exponent is not 1.
+bool HasSpotFalloff(vtkLight* light)
+{
+  return Sanitized(light->GetExponent()) != 1.0;
+}
+
+bool Any(const std::vector<vtkLight*>& lights, bool (*test)(vtkLight*))
+{
+  return std::any_of(lights.begin(), lights.end(), test);
+}
+
+// The debug views that show geometry rather than light.
+bool IsGeometryView(int view)
+{
+  return view == View::ShadingNormal || view == View::PositionVC || view == View::NormalVC;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkPhongShaderPlanner::vtkPhongShaderPlanner(
+  const PlaceholderLights& placeholders, vtkPhongProblemLog& log)
+  : Placeholders(placeholders)
+  , Log(log)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
+  vtkRenderer* ren, vtkActor* actor, const PrimitiveState& state, const Options& options)
+{
+  Plan plan;
+  vtkProperty* front = actor->GetProperty();
+  if (IsLeftToVTK(actor, state))
+  {
+    return plan;
+  }
+  const std::vector<vtkLight*> switchedOn = SwitchedOnLights(ren);
+  // VTK lights a primitive when it has at least one light; the equation still
+  // holds without lights (emission and ka*Ca*Ia), for surfaces VTK would light.
+  const bool lit = state.LightComplexity > 0;
+  const bool litWithoutLights =
+    !lit && switchedOn.empty() && front->GetLighting() && state.IsTriangles;
+  const bool geometryView = IsGeometryView(options.DebugView);
+  if ((!lit && !litWithoutLights) || (litWithoutLights && geometryView))
+  {
+    // VTK provides no normal or view-space position to an unlit primitive.
+    return plan;
+  }
+  plan.Handled = true;
+  plan.DebugView = options.DebugView;
+  SortLightsByKind(switchedOn, plan);
+  this->PickDebugLight(switchedOn, options, plan);
+
+  const bool twoSided = ren->GetTwoSidedLighting() != 0;
+  plan.FrontMaterial = front;
+  plan.BackMaterial =
+    (twoSided && actor->GetBackfaceProperty()) ? actor->GetBackfaceProperty() : front;
+
+  const bool allFeatures = !options.Specialize;
+  if (allFeatures)
+  {
+    this->AddPlaceholderLights(plan);
+  }
+  const Terms terms = ChooseTerms(plan, !switchedOn.empty(), allFeatures);
+  SetTermFeatures(terms, plan);
+  SetLightFeatures(terms, allFeatures, plan);
+  SetMaterialFeatures(terms, allFeatures, plan);
+  const bool perVertex = SetInterpolationFeatures(terms, state, geometryView, ren, plan);
+  SetNormalFeatures(terms, state, perVertex, allFeatures, plan);
+  plan.Signature = MakeSignature(plan, allFeatures);
+  return plan;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkLight*> vtkPhongShaderPlanner::SwitchedOnLights(vtkRenderer* ren)
+{
+  std::vector<vtkLight*> switchedOn;
+  vtkLightCollection* lights = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  vtkLight* light;
+  for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
+  {
+    if (light->GetSwitch())
+    {
+      switchedOn.push_back(light);
+    }
+  }
+  return switchedOn;
+}
+
+//------------------------------------------------------------------------------
+// The passes vtkPhong does not light: vertex visibility, selection highlight, PBR, and VTK's
+// lighting map passes (which need VTK's own light code to be present).
+bool vtkPhongShaderPlanner::IsLeftToVTK(vtkActor* actor, const PrimitiveState& state)
+{
+  if (state.DrawingVertices || state.DrawingSelection ||
+    actor->GetProperty()->GetInterpolation() == VTK_PBR)
+  {
+    return true;
+  }
+  vtkInformation* keys = actor->GetPropertyKeys();
+  return keys &&
+    (keys->Has(vtkLightingMapPass::RENDER_NORMALS()) ||
+      keys->Has(vtkLightingMapPass::RENDER_LUMINANCE()));
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderPlanner::SortLightsByKind(const std::vector<vtkLight*>& lights, Plan& plan)
+{
+  for (vtkLight* light : lights)
+  {
+    if (!light->GetPositional())
+    {
+      plan.DirectionalLights.push_back(light);
+    }
+    else if (light->GetConeAngle() < 90.0)
+    {
+      plan.SpotLights.push_back(light);
+    }
+    else
+    {
+      plan.PointLights.push_back(light);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderPlanner::PickDebugLight(
+  const std::vector<vtkLight*>& lights, const Options& options, Plan& plan)
+{
+  if (options.DebugView != View::SingleLight)
+  {
+    return;
+  }
+  if (options.DebugLightIndex >= 0 && options.DebugLightIndex < static_cast<int>(lights.size()))
+  {
+    plan.DebugLight = lights[options.DebugLightIndex];
+    return;
+  }
+  this->Log.Report(
+    [&](std::ostream& os)
+    {
+      os << "DebugLightIndex " << options.DebugLightIndex << " names no light: the renderer has "
+         << lights.size() << " switched-on lights; the single-light view is black.";
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderPlanner::AddPlaceholderLights(Plan& plan) const
+{
+  if (plan.DirectionalLights.empty())
+  {
+    plan.DirectionalLights.push_back(this->Placeholders.Directional);
+  }
+  if (plan.PointLights.empty())
+  {
+    plan.PointLights.push_back(this->Placeholders.Point);
+  }
+  if (plan.SpotLights.empty())
+  {
+    plan.SpotLights.push_back(this->Placeholders.Spot);
+  }
+}
+
+//------------------------------------------------------------------------------
+// A term has code when the debug view shows it and a material (front or back) has a non-zero
+// coefficient for it; the all-features variant keeps every term. Light values that are zero
+// have no code either: the ambient light of positional lights that give none.
+vtkPhongShaderPlanner::Terms vtkPhongShaderPlanner::ChooseTerms(
+  const Plan& plan, bool haveLights, bool allFeatures)
+{
+  const int view = plan.DebugView;
+  const bool finalView = view == View::Final;
+  const bool singleLight = view == View::SingleLight;
+  vtkProperty* front = plan.FrontMaterial;
+  vtkProperty* back = plan.BackMaterial;
+  const bool all = allFeatures;
+  const bool lights = haveLights || all;
+
+  Terms terms;
+  terms.Ambient = (finalView || view == View::AmbientTerm || singleLight) &&
+    (all || IsPositive(front->GetAmbient()) || IsPositive(back->GetAmbient()));
+  terms.Diffuse = (finalView || view == View::DiffuseTerm || singleLight) && lights &&
+    (all || IsPositive(front->GetDiffuse()) || IsPositive(back->GetDiffuse()));
+  terms.Specular = (finalView || view == View::SpecularTerm || singleLight) && lights &&
+    (all || IsPositive(front->GetSpecular()) || IsPositive(back->GetSpecular()));
+  terms.Emission = (finalView || view == View::EmissionTerm) &&
+    (all || vtkPhongProperty::SafeDownCast(front) || vtkPhongProperty::SafeDownCast(back));
+  const bool positional = !plan.PointLights.empty() || !plan.SpotLights.empty();
+  terms.PositionalAmbient = terms.Ambient && positional &&
+    (all || Any(plan.PointLights, HasAmbientLight) || Any(plan.SpotLights, HasAmbientLight));
+  terms.LightSums = terms.Diffuse || terms.Specular || terms.PositionalAmbient;
+  return terms;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderPlanner::SetTermFeatures(const Terms& terms, Plan& plan)
+{
+  vtkPhongFeatureSet& features = plan.Features;
+  features.Set(Feature::Ambient, terms.Ambient);
+  features.Set(Feature::Diffuse, terms.Diffuse);
+  features.Set(Feature::Specular, terms.Specular);
+  features.Set(Feature::DiffuseOrSpecular, terms.Diffuse || terms.Specular);
+  features.Set(Feature::Emission, terms.Emission);
+  features.Set(Feature::PositionalAmbient, terms.PositionalAmbient);
+  features.Set(Feature::LightSums, terms.LightSums);
+}
+
+//------------------------------------------------------------------------------
+// One code path per light kind present, and within it only the light values that are not
+// neutral: the distance attenuation of lights with (c, l, q) = (1, 0, 0) and the falloff of
+// spots with exponent 1 have no code.
+void vtkPhongShaderPlanner::SetLightFeatures(const Terms& terms, bool allFeatures, Plan& plan)
+{
+  vtkPhongFeatureSet& features = plan.Features;
+  const bool positional = !plan.PointLights.empty() || !plan.SpotLights.empty();
+  const bool point = terms.LightSums && !plan.PointLights.empty();
+  const bool spot = terms.LightSums && !plan.SpotLights.empty();
+  features.Set(
+    Feature::Directional, (terms.Diffuse || terms.Specular) && !plan.DirectionalLights.empty());
+  features.Set(Feature::Point, point);
+  features.Set(Feature::Spot, spot);
+  features.Set(Feature::Positional, terms.LightSums && positional);
+  const bool pointAttenuation = point && (allFeatures || Any(plan.PointLights, IsAttenuated));
+  const bool spotAttenuation = spot && (allFeatures || Any(plan.SpotLights, IsAttenuated));
+  features.Set(Feature::PointAttenuation, pointAttenuation);
+  features.Set(Feature::SpotAttenuation, spotAttenuation);
+  features.Set(Feature::Attenuation, pointAttenuation || spotAttenuation);
+  features.Set(Feature::SpotFalloff, spot && (allFeatures || Any(plan.SpotLights, HasSpotFalloff)));
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderPlanner::SetMaterialFeatures(const Terms& terms, bool allFeatures, Plan& plan)
+{
+  vtkPhongFeatureSet& features = plan.Features;
+  auto* phongFront = vtkPhongProperty::SafeDownCast(plan.FrontMaterial);
+  if (terms.Specular)
+  {
+    const int model = vtkPhongMaterialUniforms::LightingModelOf(plan.FrontMaterial);
+    const bool blinn =
+      model == vtkPhongProperty::BlinnPhong || model == vtkPhongProperty::NormalizedBlinnPhong;
+    features.Set(Feature::LobeBlinn, blinn);
+    features.Set(Feature::LobePhong, !blinn);
+    features.Set(Feature::SmoothTerminator, phongFront && phongFront->GetSmoothTerminator());
+  }
+  features.Set(Feature::SoftSpotEdge,
+    features.Has(Feature::Spot) && (allFeatures || (phongFront && phongFront->GetSoftSpotEdge())));
+  features.Set(Feature::BackMaterial, plan.BackMaterial != plan.FrontMaterial);
+}
+
+//------------------------------------------------------------------------------
+// Where the light sums are evaluated (per vertex only for vtkPhongProperty's true Gouraud on
+// surfaces with point normals), and the view and sidedness. Returns whether per vertex.
+bool vtkPhongShaderPlanner::SetInterpolationFeatures(
+  const Terms& terms, const PrimitiveState& state, bool geometryView, vtkRenderer* ren, Plan& plan)
+{
+  vtkPhongFeatureSet& features = plan.Features;
+  vtkProperty* front = plan.FrontMaterial;
+  auto* phongFront = vtkPhongProperty::SafeDownCast(front);
+  vtkCamera* camera = ren->GetActiveCamera();
+  features.Set(Feature::Parallel, camera && camera->GetParallelProjection());
+
+  const bool perVertex = terms.LightSums && phongFront && phongFront->GetPerVertexGouraud() &&
+    front->GetInterpolation() == VTK_GOURAUD && state.HasPointNormals && !state.NormalsFromShape &&
+    !geometryView;
+  features.Set(Feature::PerVertex, perVertex);
+  features.Set(Feature::SumsPerVertex, terms.LightSums && perVertex);
+  features.Set(Feature::SumsPerFragment, terms.LightSums && !perVertex);
+  features.Set(Feature::GeometryPassThrough, perVertex && state.HasGeometryShader);
+  features.Set(Feature::TwoSided, ren->GetTwoSidedLighting() != 0);
+  return perVertex;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderPlanner::SetNormalFeatures(
+  const Terms& terms, const PrimitiveState& state, bool perVertex, bool allFeatures, Plan& plan)
+{
+  vtkPhongFeatureSet& features = plan.Features;
+  const int view = plan.DebugView;
+  features.Set(Feature::DebugNormal, view == View::ShadingNormal);
+  features.Set(Feature::DebugNormalVC, view == View::NormalVC);
+  features.Set(Feature::DebugPositionVC, view == View::PositionVC);
+
+  const bool normalView = view == View::ShadingNormal || view == View::NormalVC;
+  const bool shadingNormal = (terms.LightSums && !perVertex) || normalView;
+  features.Set(Feature::ShadingNormal, shadingNormal);
+  features.Set(Feature::OneSided, shadingNormal && !features.Has(Feature::TwoSided));
+  // Zero, NaN or infinite normals in the data take the face's geometric normal
+  // from screen-space derivatives, which cost every fragment: only when the
+  // mapper found such normals. Otherwise a cheap guard covers normals that
+  // cancel out when interpolated.
+  features.Set(Feature::NormalFallback,
+    shadingNormal && (state.NormalsMayBeInvalid || allFeatures) &&
+      (state.HasPointNormals || state.HasCellNormals) && !state.NormalsFromShape);
+  features.Set(Feature::ViewVector, shadingNormal);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPhongShaderPlanner::MakeSignature(const Plan& plan, bool allFeatures)
+{
+  const vtkPhongFeatureSet& features = plan.Features;
+  auto countIf = [](bool used, const std::vector<vtkLight*>& lights)
+  { return used ? lights.size() : 0; };
+  std::ostringstream signature;
+  signature << features.GetNames() << "| directional "
+            << countIf(features.Has(Feature::Directional), plan.DirectionalLights) << " point "
+            << countIf(features.Has(Feature::Point), plan.PointLights) << " spot "
+            << countIf(features.Has(Feature::Spot), plan.SpotLights) << " | view " << plan.DebugView
+            << (allFeatures ? " | all features" : "");
+  return signature.str();
+}

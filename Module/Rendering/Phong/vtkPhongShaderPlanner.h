@@ -1,0 +1,88 @@
+/**
+ * @class   vtkPhongShaderPlanner
+ * @brief   decides which lighting code a primitive needs: the plan and its signature
+ *
+ * The first of vtkPhongShaderBuilder's three concerns (plan, template, uniforms). MakePlan()
+ * reads the renderer's lights, the actor's materials and what the mapper knows about the
+ * primitive, and sets the features (vtkPhongShaderFeatures.h) of the shader it needs, in
+ * named steps: whether vtkPhong handles the primitive at all, the lights by kind, the terms
+ * with non-zero coefficients, the light features, the material features, the interpolation,
+ * the normal. The signature summarises the plan: equal signatures mean identical lighting
+ * code.
+ *
+ * Private to the module.
+ *
+ * @sa vtkPhongShaderBuilder
+ */
+
+#ifndef vtkPhongShaderPlanner_h
+#define vtkPhongShaderPlanner_h
+
+#include "vtkPhongShaderBuilder.h" // for Plan, PrimitiveState, Options
+
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+class vtkPhongProblemLog;
+
+class vtkPhongShaderPlanner
+{
+public:
+  using Plan = vtkPhongShaderBuilder::Plan;
+  using PrimitiveState = vtkPhongShaderBuilder::PrimitiveState;
+  using Options = vtkPhongShaderBuilder::Options;
+
+  /**
+   * Lights that contribute nothing, standing in for the light kinds a scene lacks in the
+   * all-features variant, whose code needs at least one light of each kind.
+   */
+  struct PlaceholderLights
+  {
+    vtkLight* Directional = nullptr;
+    vtkLight* Point = nullptr;
+    vtkLight* Spot = nullptr;
+  };
+
+  vtkPhongShaderPlanner(const PlaceholderLights& placeholders, vtkPhongProblemLog& log);
+
+  Plan MakePlan(
+    vtkRenderer* ren, vtkActor* actor, const PrimitiveState& state, const Options& options);
+
+  /**
+   * The renderer's lights that are switched on, in the renderer's order (the order of the
+   * light indices in messages and of DebugLightIndex).
+   */
+  static std::vector<vtkLight*> SwitchedOnLights(vtkRenderer* ren);
+
+private:
+  // The terms of the equation the variant evaluates.
+  struct Terms
+  {
+    bool Ambient = false;
+    bool Diffuse = false;
+    bool Specular = false;
+    bool Emission = false;
+    bool PositionalAmbient = false;
+    bool LightSums = false; ///< any per-light sum: diffuse, specular or positional ambient
+  };
+
+  static bool IsLeftToVTK(vtkActor* actor, const PrimitiveState& state);
+  static void SortLightsByKind(const std::vector<vtkLight*>& lights, Plan& plan);
+  void PickDebugLight(const std::vector<vtkLight*>& lights, const Options& options, Plan& plan);
+  void AddPlaceholderLights(Plan& plan) const;
+  static Terms ChooseTerms(const Plan& plan, bool haveLights, bool allFeatures);
+  static void SetTermFeatures(const Terms& terms, Plan& plan);
+  static void SetLightFeatures(const Terms& terms, bool allFeatures, Plan& plan);
+  static void SetMaterialFeatures(const Terms& terms, bool allFeatures, Plan& plan);
+  static bool SetInterpolationFeatures(const Terms& terms, const PrimitiveState& state,
+    bool geometryView, vtkRenderer* ren, Plan& plan);
+  static void SetNormalFeatures(
+    const Terms& terms, const PrimitiveState& state, bool perVertex, bool allFeatures, Plan& plan);
+  static std::string MakeSignature(const Plan& plan, bool allFeatures);
+
+  PlaceholderLights Placeholders;
+  vtkPhongProblemLog& Log;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkPhongShaderPlanner.h

@@ -1,0 +1,282 @@
+#include "vtkPhongShaderTemplate.h"
+
+#include "vtkObject.h"
+#include "vtkShaderProgram.h"
+
+#include "vtkPhongFS.h"
+#include "vtkPhongGS.h"
+#include "vtkPhongLightingLib.h"
+#include "vtkPhongVS.h"
+
+#include <sstream>
+
+namespace
+{
+using Feature = vtkPhongFeature;
+
+// Strip leading blanks, for matching template directives.
+std::string TrimLeft(const std::string& line)
+{
+  const auto first = line.find_first_not_of(" \t");
+  return first == std::string::npos ? std::string() : line.substr(first);
+}
+
+bool StartsWith(const std::string& text, const char* prefix)
+{
+  return text.compare(0, std::char_traits<char>::length(prefix), prefix) == 0;
+}
+
+// How often "variable =" occurs in the source.
+std::size_t CountAssignments(const std::string& source, const char* variable)
+{
+  std::size_t count = 0;
+  const std::string assignment = std::string(variable) + " =";
+  for (std::size_t at = source.find(assignment); at != std::string::npos;
+       at = source.find(assignment, at + 1))
+  {
+    ++count;
+  }
+  return count;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkPhongShaderTemplate::vtkPhongShaderTemplate(vtkObject* reporter)
+  : Reporter(reporter)
+{
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongShaderTemplate::Get(const char* name)
+{
+  const std::string file(name ? name : "");
+  if (file == "vtkPhongLightingLib")
+  {
+    return vtkPhongLightingLib;
+  }
+  if (file == "vtkPhongFS")
+  {
+    return vtkPhongFS;
+  }
+  if (file == "vtkPhongVS")
+  {
+    return vtkPhongVS;
+  }
+  if (file == "vtkPhongGS")
+  {
+    return vtkPhongGS;
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPhongShaderTemplate::Resolve(
+  const char* templateText, const char* section, const Plan& plan) const
+{
+  Reading reading;
+  reading.Section = section;
+  reading.SectionLine = std::string("//PHONG_SECTION ") + section;
+  std::istringstream input(templateText);
+  std::string line;
+  std::string output;
+  while (std::getline(input, line))
+  {
+    ++reading.LineNumber;
+    const bool kept = !this->ReadDirective(TrimLeft(line), plan, reading) && reading.InSection &&
+      (reading.Active.empty() || reading.Active.back());
+    if (kept)
+    {
+      this->FillPlaceholders(line, plan, reading.LineNumber);
+      output += line;
+      output += '\n';
+    }
+  }
+  if (!reading.SectionFound)
+  {
+    vtkErrorWithObjectMacro(this->Reporter, "Template has no section " << section << ".");
+  }
+  else if (reading.InSection && !reading.Active.empty())
+  {
+    vtkErrorWithObjectMacro(
+      this->Reporter, "Template section " << section << " ends with an open //PHONG_IF.");
+  }
+  return output;
+}
+
+//------------------------------------------------------------------------------
+// Follow a //PHONG_SECTION, //PHONG_IF or //PHONG_ENDIF line; false for any other line.
+bool vtkPhongShaderTemplate::ReadDirective(
+  const std::string& trimmed, const Plan& plan, Reading& reading) const
+{
+  if (StartsWith(trimmed, "//PHONG_SECTION "))
+  {
+    if (reading.InSection && !reading.Active.empty())
+    {
+      vtkErrorWithObjectMacro(
+        this->Reporter, "Template section " << reading.Section << " ends with an open //PHONG_IF.");
+    }
+    reading.InSection = (trimmed == reading.SectionLine);
+    reading.SectionFound = reading.SectionFound || reading.InSection;
+    reading.Active.clear();
+    return true;
+  }
+  if (!reading.InSection)
+  {
+    return false;
+  }
+  const bool enclosingActive = reading.Active.empty() || reading.Active.back();
+  if (StartsWith(trimmed, "//PHONG_IF "))
+  {
+    std::string condition = TrimLeft(trimmed.substr(11));
+    condition.erase(condition.find_last_not_of(" \t\r") + 1);
+    reading.Active.push_back(
+      enclosingActive && this->FeatureCondition(condition, plan, reading.LineNumber));
+    return true;
+  }
+  if (StartsWith(trimmed, "//PHONG_ENDIF"))
+  {
+    if (reading.Active.empty())
+    {
+      vtkErrorWithObjectMacro(
+        this->Reporter, "Unbalanced //PHONG_ENDIF at template line " << reading.LineNumber << ".");
+    }
+    else
+    {
+      reading.Active.pop_back();
+    }
+    return true;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+// Whether a //PHONG_IF condition ("FEATURE" or "!FEATURE") holds for the plan.
+bool vtkPhongShaderTemplate::FeatureCondition(
+  const std::string& condition, const Plan& plan, int lineNumber) const
+{
+  const bool negate = !condition.empty() && condition[0] == '!';
+  const std::string name = negate ? condition.substr(1) : condition;
+  vtkPhongFeature feature;
+  if (!vtkPhongFeatureSet::FindByName(name, feature))
+  {
+    vtkErrorWithObjectMacro(this->Reporter,
+      "Unknown feature '" << name << "' in //PHONG_IF at template line " << lineNumber << ".");
+    return negate;
+  }
+  return plan.Has(feature) != negate;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderTemplate::FillPlaceholders(
+  std::string& line, const Plan& plan, int lineNumber) const
+{
+  const std::pair<const char*, std::size_t> placeholders[] = {
+    { "@DIRECTIONAL_COUNT@", plan.DirectionalLights.size() },
+    { "@POINT_COUNT@", plan.PointLights.size() },
+    { "@SPOT_COUNT@", plan.SpotLights.size() },
+  };
+  for (const auto& placeholder : placeholders)
+  {
+    const std::string name = placeholder.first;
+    const std::string value = std::to_string(placeholder.second);
+    for (auto at = line.find(name); at != std::string::npos; at = line.find(name, at))
+    {
+      line.replace(at, name.size(), value);
+    }
+  }
+  if (line.find('@') != std::string::npos)
+  {
+    vtkErrorWithObjectMacro(
+      this->Reporter, "Unknown placeholder in template line " << lineNumber << ": " << line);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderTemplate::Substitute(
+  std::map<vtkShader::Type, vtkShader*>& shaders, const Plan& givenPlan) const
+{
+  // When VTK's Color::Impl (already substituted) takes every material colour from its
+  // uniforms, the lighting code uses ready-made products instead (MATERIAL_UNIFORMS in
+  // vtkPhongFS.glsl). Whatever changes VTK's colour code (mapped scalars, a back-face
+  // property) makes VTK rebuild the shader, and this is decided again.
+  Plan plan = givenPlan;
+  if (UsesUniformColors(shaders[vtkShader::Fragment]->GetSource()) &&
+    !plan.Has(Feature::BackMaterial))
+  {
+    plan.Features.Set(Feature::MaterialUniforms);
+  }
+  const bool perVertex = plan.Has(Feature::SumsPerVertex);
+  const std::string sums = this->Resolve(vtkPhongLightingLib, "Sums", plan);
+  const std::string lights = this->Resolve(vtkPhongLightingLib, "Lights", plan);
+  this->SubstituteFragment(
+    shaders[vtkShader::Fragment], sums, perVertex ? std::string() : lights, plan);
+  if (perVertex)
+  {
+    this->SubstitutePerVertex(shaders, sums, lights, plan);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Whether VTK's colour code takes each material colour from its uniform, assigned once: VTK's
+// edges, back faces and lighting-map passes (substituted before the lighting) reassign them,
+// and then the variables must be read.
+bool vtkPhongShaderTemplate::UsesUniformColors(const std::string& fragmentSource)
+{
+  auto assignedOnceAs = [&fragmentSource](const char* variable, const char* definition)
+  {
+    return CountAssignments(fragmentSource, variable) == 1 &&
+      fragmentSource.find(definition) != std::string::npos;
+  };
+  return assignedOnceAs(
+           "ambientColor", "vec3 ambientColor = ambientIntensity * ambientColorUniform;") &&
+    assignedOnceAs("diffuseColor", "vec3 diffuseColor = diffuseIntensity * diffuseColorUniform;") &&
+    assignedOnceAs(
+      "specularColor", "vec3 specularColor = specularIntensity * specularColorUniform;");
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderTemplate::SubstituteFragment(vtkShader* fragmentShader, const std::string& sums,
+  const std::string& lights, const Plan& plan) const
+{
+  std::string fragment = fragmentShader->GetSource();
+  const std::string declarations = sums + lights + this->Resolve(vtkPhongFS, "Dec", plan);
+  vtkShaderProgram::Substitute(
+    fragment, "//VTK::Light::Dec", declarations + "//VTK::Light::Dec", false);
+  const std::string uniformFlow = this->Resolve(vtkPhongFS, "UniformFlow", plan);
+  if (!uniformFlow.empty())
+  {
+    vtkShaderProgram::Substitute(
+      fragment, "//VTK::UniformFlow::Impl", uniformFlow + "  //VTK::UniformFlow::Impl", false);
+  }
+  vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl",
+    this->Resolve(vtkPhongFS, "Impl", plan) + "  //VTK::Light::Impl", false);
+  // VTK multiplies gl_FragData[0] by the texture colour at TCoord::Impl; what
+  // must escape the texture (emission, specular) is added right after it.
+  vtkShaderProgram::Substitute(fragment, "//VTK::TCoord::Impl",
+    "//VTK::TCoord::Impl\n" + this->Resolve(vtkPhongFS, "PostTexture", plan), false);
+  fragmentShader->SetSource(fragment);
+}
+
+//------------------------------------------------------------------------------
+// True per-vertex Gouraud: the light sums move to the vertex shader, and a geometry shader
+// (wide lines, ...) passes them through.
+void vtkPhongShaderTemplate::SubstitutePerVertex(std::map<vtkShader::Type, vtkShader*>& shaders,
+  const std::string& sums, const std::string& lights, const Plan& plan) const
+{
+  std::string vertex = shaders[vtkShader::Vertex]->GetSource();
+  vtkShaderProgram::Substitute(vertex, "//VTK::Light::Dec",
+    sums + lights + this->Resolve(vtkPhongVS, "Dec", plan) + "//VTK::Light::Dec", false);
+  vtkShaderProgram::Substitute(vertex, "//VTK::Light::Impl",
+    this->Resolve(vtkPhongVS, "Impl", plan) + "  //VTK::Light::Impl", false);
+  shaders[vtkShader::Vertex]->SetSource(vertex);
+
+  std::string geometry = shaders[vtkShader::Geometry]->GetSource();
+  if (!geometry.empty())
+  {
+    vtkShaderProgram::Substitute(geometry, "//VTK::Light::Dec",
+      this->Resolve(vtkPhongGS, "Dec", plan) + "//VTK::Light::Dec", false);
+    vtkShaderProgram::Substitute(geometry, "//VTK::Light::Impl",
+      this->Resolve(vtkPhongGS, "Impl", plan) + "    //VTK::Light::Impl", false);
+    shaders[vtkShader::Geometry]->SetSource(geometry);
+  }
+}
