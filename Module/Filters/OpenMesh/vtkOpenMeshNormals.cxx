@@ -5,6 +5,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenMeshNormalsExecution.h"
 #include "vtkOpenMeshNormalsTopology.h"
+#include "vtkPhongCellValidator.h"
+#include "vtkPhongClampedSetter.h"
 #include "vtkPolyData.h"
 
 vtkStandardNewMacro(vtkOpenMeshNormals);
@@ -31,6 +33,12 @@ vtkOpenMeshNormals::~vtkOpenMeshNormals()
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenMeshNormals::SetFeatureAngle(double angle)
+{
+  vtkPhongSetClamped(this, "FeatureAngle", this->FeatureAngle, angle, 0.0, 180.0);
+}
+
+//------------------------------------------------------------------------------
 const char* vtkOpenMeshNormals::GetWeightingAsString()
 {
   switch (this->Weighting)
@@ -52,11 +60,13 @@ const char* vtkOpenMeshNormals::GetWeightingAsString()
 int vtkOpenMeshNormals::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->NumberOfNonManifoldFaces = this->NumberOfFacesWithRepeatedPoints = 0;
+  this->NumberOfInvalidCells = this->NumberOfNonManifoldFaces = 0;
+  this->NumberOfFacesWithRepeatedPoints = 0;
   this->NumberOfDegenerateFaces = this->NumberOfReorientedFaces = this->NumberOfSplitPoints = 0;
   this->TopologyReused = false;
+  const vtkSmartPointer<vtkPolyData> input =
+    this->CheckCellPointIds(vtkPolyData::GetData(inputVector[0]));
   if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0)
   {
     output->ShallowCopy(input); // empty input: nothing to compute
@@ -109,6 +119,21 @@ int vtkOpenMeshNormals::RequestData(
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkOpenMeshNormals::CheckCellPointIds(vtkPolyData* input)
+{
+  this->NumberOfInvalidCells = vtkPhongCellValidator::CountInvalidCells(input);
+  if (this->NumberOfInvalidCells == 0)
+  {
+    return input;
+  }
+  vtkWarningMacro(<< this->NumberOfInvalidCells << " cells name point ids outside [0, "
+                  << input->GetNumberOfPoints()
+                  << "); they are collapsed onto one of their points (vtkPhongCellValidator) and "
+                     "have no normal.");
+  return vtkPhongCellValidator::CollapseInvalidCells(input);
+}
+
+//------------------------------------------------------------------------------
 // Reuses the topology when only the points changed, else builds it; false if
 // building failed (aborted, or a mesh too large).
 bool vtkOpenMeshNormals::UpdateTopology(vtkPolyData* input)
@@ -158,6 +183,7 @@ void vtkOpenMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "OriginalPointIdsArrayName: "
      << (this->OriginalPointIdsArrayName ? this->OriginalPointIdsArrayName : "(none)") << "\n";
+  os << indent << "NumberOfInvalidCells: " << this->NumberOfInvalidCells << "\n";
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
   os << indent << "NumberOfFacesWithRepeatedPoints: " << this->NumberOfFacesWithRepeatedPoints
      << "\n";

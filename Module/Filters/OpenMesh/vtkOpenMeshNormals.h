@@ -53,6 +53,8 @@
 #include "vtkFiltersOpenMeshModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+
 #include <memory> // for std::unique_ptr
 
 class VTKFILTERSOPENMESH_EXPORT vtkOpenMeshNormals : public vtkPolyDataAlgorithm
@@ -90,9 +92,9 @@ public:
   ///@{
   /**
    * The angle in degrees between two faces above which their shared edge is sharp. Default
-   * 30 (as vtkPolyDataNormals), range [0, 180].
+   * 30 (as vtkPolyDataNormals), range [0, 180]; NaN is refused with an error.
    */
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  virtual void SetFeatureAngle(double angle);
   vtkGetMacro(FeatureAngle, double);
   ///@}
 
@@ -188,12 +190,14 @@ public:
 
   ///@{
   /**
-   * What the last execution found: faces given their own vertex copies because OpenMesh
-   * refused them (non-manifold), faces that repeated a vertex index, faces left with fewer
-   * than three distinct vertices, faces whose orientation Consistency or AutoOrientNormals
-   * reversed, points added by Splitting, and whether the topology of the previous execution
-   * was reused (only the points had changed).
+   * What the last execution found: cells (of any kind) that named a point the input does not
+   * have, collapsed and reported with a warning (vtkPhongCellValidator), faces given their own
+   * vertex copies because OpenMesh refused them (non-manifold), faces that repeated a vertex index,
+   * faces left with fewer than three distinct vertices, faces whose orientation Consistency or
+   * AutoOrientNormals reversed, points added by Splitting, and whether the topology of the previous
+   * execution was reused (only the points had changed).
    */
+  vtkGetMacro(NumberOfInvalidCells, vtkIdType);
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
   vtkGetMacro(NumberOfFacesWithRepeatedPoints, vtkIdType);
   vtkGetMacro(NumberOfDegenerateFaces, vtkIdType);
@@ -220,6 +224,7 @@ protected:
   vtkTypeBool IncrementalConstruction = 0;
   char* OriginalPointIdsArrayName = nullptr;
 
+  vtkIdType NumberOfInvalidCells = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
   vtkIdType NumberOfFacesWithRepeatedPoints = 0;
   vtkIdType NumberOfDegenerateFaces = 0;
@@ -231,6 +236,8 @@ private:
   vtkOpenMeshNormals(const vtkOpenMeshNormals&) = delete;
   void operator=(const vtkOpenMeshNormals&) = delete;
 
+  // The input with its cells that name missing points collapsed (and reported).
+  vtkSmartPointer<vtkPolyData> CheckCellPointIds(vtkPolyData* input);
   // Reuses the topology (vtkOpenMeshNormalsTopology) or builds it.
   bool UpdateTopology(vtkPolyData* input);
 

@@ -2,10 +2,13 @@
 
 #include "vtkActor.h"
 #include "vtkCellData.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPhongCellValidator.h"
+#include "vtkPhongClampedSetter.h"
 #include "vtkPhongMapperCore.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -20,6 +23,11 @@ struct vtkPhongPolyDataMapper::Internals
   vtkNew<vtkOpenMeshNormals> Normals;
   // The mapper named vtkOriginalPointIds for picking itself (and may unname it).
   bool NamedPointIds = false;
+  // The last input checked for cells that name missing points (by its modification time),
+  // and the copy drawn instead when it has such cells (nullptr: the input is fine).
+  vtkPolyData* CheckedInput = nullptr;
+  vtkMTimeType CheckedTime = 0;
+  vtkSmartPointer<vtkPolyData> ValidCopy;
 };
 
 //------------------------------------------------------------------------------
@@ -30,6 +38,51 @@ vtkPhongPolyDataMapper::vtkPhongPolyDataMapper()
 
 //------------------------------------------------------------------------------
 vtkPhongPolyDataMapper::~vtkPhongPolyDataMapper() = default;
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::SetNormalsFeatureAngle(double angle)
+{
+  vtkPhongSetClamped(this, "NormalsFeatureAngle", this->NormalsFeatureAngle, angle, 0.0, 180.0);
+}
+
+//------------------------------------------------------------------------------
+// Cells that name missing points would make VTK read out of bounds (bounds, buffer upload)
+// and the normals filter too: such cells are collapsed in a copy (vtkPhongCellValidator),
+// reported once per input change.
+vtkPolyData* vtkPhongPolyDataMapper::GetValidInput(vtkPolyData* input)
+{
+  Internals& internal = *this->Internal;
+  if (!input)
+  {
+    return nullptr;
+  }
+  if (input != internal.CheckedInput || input->GetMTime() != internal.CheckedTime)
+  {
+    internal.CheckedInput = input;
+    internal.CheckedTime = input->GetMTime();
+    internal.ValidCopy = nullptr;
+    const vtkIdType invalid = vtkPhongCellValidator::CountInvalidCells(input);
+    if (invalid > 0)
+    {
+      vtkWarningMacro(<< invalid << " cells of the input name point ids outside [0, "
+                      << input->GetNumberOfPoints() << "); they are not drawn.");
+      internal.ValidCopy = vtkPhongCellValidator::CollapseInvalidCells(input);
+    }
+  }
+  return internal.ValidCopy ? internal.ValidCopy.Get() : input;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::ComputeBounds()
+{
+  vtkPolyData* input = this->GetValidInput(this->GetInput());
+  if (!input)
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return;
+  }
+  input->GetBounds(this->Bounds);
+}
 
 //------------------------------------------------------------------------------
 const char* vtkPhongPolyDataMapper::GetDebugViewAsString()
@@ -197,7 +250,8 @@ void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
   // Input without normals, shaded smoothly: draw the normals filter's output
   // instead. The filter re-executes only when its input or settings change.
-  vtkPolyData* input = this->CurrentInput;
+  vtkPolyData* input = this->GetValidInput(this->CurrentInput);
+  this->CurrentInput = input;
   this->UsedGeneratedNormals = this->ComputeMissingNormals && input &&
     (input->GetNumberOfPolys() > 0 || input->GetNumberOfStrips() > 0) &&
     !input->GetPointData()->GetNormals() && !input->GetCellData()->GetNormals() &&

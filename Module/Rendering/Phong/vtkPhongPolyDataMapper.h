@@ -126,7 +126,7 @@ public:
   void SetNormalsWeightingToArea() { this->SetNormalsWeighting(vtkOpenMeshNormals::Area); }
   void SetNormalsWeightingToAngle() { this->SetNormalsWeighting(vtkOpenMeshNormals::Angle); }
   void SetNormalsWeightingToMax() { this->SetNormalsWeighting(vtkOpenMeshNormals::Max); }
-  vtkSetClampMacro(NormalsFeatureAngle, double, 0.0, 180.0);
+  virtual void SetNormalsFeatureAngle(double angle); ///< NaN is refused with an error
   vtkGetMacro(NormalsFeatureAngle, double);
   vtkSetMacro(NormalsSplitting, bool);
   vtkGetMacro(NormalsSplitting, bool);
@@ -202,6 +202,7 @@ protected:
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetPropertyShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void ComputeBounds() override;
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
 
@@ -217,6 +218,8 @@ protected:
 private:
   vtkPhongPolyDataMapper(const vtkPhongPolyDataMapper&) = delete;
   void operator=(const vtkPhongPolyDataMapper&) = delete;
+
+  vtkPolyData* GetValidInput(vtkPolyData* input);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

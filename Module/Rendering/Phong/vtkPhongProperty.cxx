@@ -1,6 +1,7 @@
 #include "vtkPhongProperty.h"
 
 #include "vtkObjectFactory.h"
+#include "vtkPhongClampedSetter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -72,6 +73,12 @@ void vtkPhongProperty::SetSpecularPower(double specularPower)
     this->Shininess = this->SpecularPower;
     this->Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongProperty::SetSpotEdgeWidth(double width)
+{
+  vtkPhongSetClamped(this, "SpotEdgeWidth", this->SpotEdgeWidth, width, 0.0, 90.0);
 }
 
 //------------------------------------------------------------------------------

@@ -115,9 +115,10 @@ public:
 
   ///@{
   /**
-   * Width in degrees of the soft spot edge band. Default 5, range [0, 90].
+   * Width in degrees of the soft spot edge band. Default 5, range [0, 90]; NaN is refused
+   * with an error.
    */
-  vtkSetClampMacro(SpotEdgeWidth, double, 0.0, 90.0);
+  virtual void SetSpotEdgeWidth(double width);
   vtkGetMacro(SpotEdgeWidth, double);
   ///@}
 
