@@ -128,7 +128,13 @@ vtkPhongLightUniforms::RGB vtkPhongLightUniforms::ScaledColor(
            << " colour component " << color[c]
            << "; colours must be finite and >= 0, so it is treated as 0.";
       });
-    scaled[c] = static_cast<float>(value * intensity);
+    scaled[c] =
+      static_cast<float>(this->Log.Bounded(value * intensity, vtkPhongProblemLog::LargestValue,
+        [&](std::ostream& os)
+        {
+          os << "Light " << this->IndexOf(light) << " (" << LightKindName(light) << ") " << which
+             << " colour times intensity";
+        }));
   }
   return scaled;
 }
@@ -185,12 +191,14 @@ void vtkPhongLightUniforms::ReadSceneAmbient()
   const double* ia = this->Renderer->GetAmbient();
   for (int c = 0; c < 3; ++c)
   {
-    this->AmbientLight[c] = this->Log.NonNegative(ia[c],
+    const double component = this->Log.NonNegative(ia[c],
       [&](std::ostream& os)
       {
         os << "The renderer's ambient light component " << ia[c]
            << " is not a finite value >= 0; it is treated as 0.";
       });
+    this->AmbientLight[c] = this->Log.Bounded(component, vtkPhongProblemLog::LargestValue,
+      [](std::ostream& os) { os << "The renderer's ambient light component"; });
   }
 }
 
@@ -259,12 +267,16 @@ vtkPhongLightUniforms::RGB vtkPhongLightUniforms::AttenuationOf(vtkLight* light)
   const double* values = light->GetAttenuationValues();
   for (int c = 0; c < 3; ++c)
   {
-    attenuation[c] = static_cast<float>(this->Log.NonNegative(values[c],
+    const double coefficient = this->Log.NonNegative(values[c],
       [&](std::ostream& os)
       {
         os << "Positional light " << this->IndexOf(light) << " has attenuation coefficient "
            << values[c] << "; coefficients must be finite and >= 0, so it is treated as 0.";
-      }));
+      });
+    attenuation[c] =
+      static_cast<float>(this->Log.Bounded(coefficient, vtkPhongProblemLog::LargestAttenuation,
+        [&](std::ostream& os)
+        { os << "Positional light " << this->IndexOf(light) << " attenuation coefficient"; }));
   }
   return attenuation;
 }
@@ -287,12 +299,15 @@ void vtkPhongLightUniforms::AddSpot(
   AppendRGB(arrays.AxisVC, geometry.DirectionVC);
   const double cone = std::max(light->GetConeAngle(), 0.0);
   arrays.CosCutoff.push_back(static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone))));
-  arrays.Exponent.push_back(static_cast<float>(this->Log.NonNegative(light->GetExponent(),
+  const double exponent = this->Log.NonNegative(light->GetExponent(),
     [&](std::ostream& os)
     {
       os << "Spot light " << this->IndexOf(light) << " has exponent " << light->GetExponent()
          << "; spot exponents must be finite and >= 0, so it is treated as 0.";
-    })));
+    });
+  arrays.Exponent.push_back(
+    static_cast<float>(this->Log.Bounded(exponent, vtkPhongProblemLog::LargestValue,
+      [&](std::ostream& os) { os << "Spot light " << this->IndexOf(light) << " exponent"; })));
   // Without the soft edge option the band has no width (a hard edge), also in the
   // all-features variant, which evaluates the smoothstep anyway.
   auto* phongFront = vtkPhongProperty::SafeDownCast(this->ThePlan.FrontMaterial);
@@ -312,7 +327,15 @@ void vtkPhongLightUniforms::UploadPositional(
   {
     const LightValues values = this->ValuesOf(light);
     const LightGeometry geometry = this->GeometryOf(light);
-    AppendRGB(arrays.PositionVC, geometry.PositionVC);
+    double positionVC[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      positionVC[i] =
+        this->Log.Bounded(geometry.PositionVC[i], vtkPhongProblemLog::LargestCoordinate,
+          [&](std::ostream& os)
+          { os << "Light " << this->IndexOf(light) << " position component (view coordinates)"; });
+    }
+    AppendRGB(arrays.PositionVC, positionVC);
     AppendRGB(arrays.Attenuation, this->AttenuationOf(light));
     AppendRGB(arrays.Ambient, values.Ambient);
     AppendRGB(arrays.Diffuse, values.Diffuse);
@@ -371,25 +394,28 @@ void vtkPhongLightUniforms::UploadEmission()
   const Plan& plan = this->ThePlan;
   if (plan.Has(Feature::Emission))
   {
-    auto emissionOf = [](vtkProperty* material)
+    auto emissionOf = [this](vtkProperty* material, const char* side)
     {
       auto* phong = vtkPhongProperty::SafeDownCast(material);
       RGB emission = { 0.f, 0.f, 0.f };
       for (int c = 0; phong && c < 3; ++c)
       {
-        emission[c] = static_cast<float>(phong->GetEmission()[c]);
+        emission[c] = static_cast<float>(this->Log.Bounded(phong->GetEmission()[c],
+          vtkPhongProblemLog::LargestValue,
+          [side](std::ostream& os) { os << "The " << side << " material's emission component"; }));
       }
       return emission;
     };
-    this->Program->SetUniform3f("phongEmission", emissionOf(plan.FrontMaterial).data());
+    this->Program->SetUniform3f("phongEmission", emissionOf(plan.FrontMaterial, "front").data());
     if (plan.Has(Feature::BackMaterial))
     {
-      this->Program->SetUniform3f("phongEmissionBF", emissionOf(plan.BackMaterial).data());
+      this->Program->SetUniform3f("phongEmissionBF", emissionOf(plan.BackMaterial, "back").data());
     }
   }
   if (this->Program->IsUniformUsed("phongShininessBF"))
   {
     this->Program->SetUniformf("phongShininessBF",
-      static_cast<float>(vtkPhongMaterialUniforms::ShininessOf(plan.BackMaterial)));
+      static_cast<float>(std::min(vtkPhongMaterialUniforms::ShininessOf(plan.BackMaterial),
+        vtkPhongProblemLog::LargestValue)));
   }
 }

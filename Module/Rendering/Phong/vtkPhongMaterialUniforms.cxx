@@ -5,6 +5,7 @@
 #include "vtkProperty.h"
 #include "vtkShaderProgram.h"
 
+#include <algorithm>
 #include <cmath>
 
 //------------------------------------------------------------------------------
@@ -48,10 +49,16 @@ double vtkPhongMaterialUniforms::LobeNormalization(int lightingModel, double shi
 void vtkPhongMaterialUniforms::FiniteProduct(
   double coefficient, const double color[3], const double scale[3], float product[3])
 {
-  const double k = std::isfinite(coefficient) ? coefficient : 0.0;
+  // Bad values were reported where the material's own uniforms were checked.
+  auto usable = [](double value)
+  {
+    const double largest = vtkPhongProblemLog::LargestValue;
+    return std::isfinite(value) ? std::min(std::max(value, -largest), largest) : 0.0;
+  };
+  const double k = usable(coefficient);
   for (int c = 0; c < 3; ++c)
   {
-    product[c] = static_cast<float>(k * (std::isfinite(color[c]) ? color[c] : 0.0) * scale[c]);
+    product[c] = static_cast<float>(k * usable(color[c]) * scale[c]);
   }
 }
 
@@ -95,7 +102,11 @@ void vtkPhongMaterialUniforms::UploadSide(vtkProperty* material, const char* suf
   {
     this->Set("specularIntensity", specular);
     this->Set("specularColorUniform", specularColor);
-    this->Set("specularPowerUniform", static_cast<float>(shininess));
+    this->Set("specularPowerUniform",
+      static_cast<float>(this->Log.Bounded(
+        shininess, vtkPhongProblemLog::LargestValue,
+        [&](std::ostream& os) { os << "The " << this->SideName << " material's shininess"; },
+        this->Report)));
   }
 }
 
@@ -112,7 +123,11 @@ vtkPhongMaterialUniforms::RGB vtkPhongMaterialUniforms::CheckedColor(
         os << "The " << this->SideName << " material's " << which << " colour component "
            << color[c] << " is not finite; it is treated as 0.";
       });
-    out[c] = static_cast<float>(value * scale);
+    out[c] = static_cast<float>(this->Log.Bounded(
+      value * scale, vtkPhongProblemLog::LargestValue,
+      [&](std::ostream& os)
+      { os << "The " << this->SideName << " material's " << which << " colour component"; },
+      this->Report));
   }
   return out;
 }
@@ -120,12 +135,17 @@ vtkPhongMaterialUniforms::RGB vtkPhongMaterialUniforms::CheckedColor(
 //------------------------------------------------------------------------------
 float vtkPhongMaterialUniforms::CheckedCoefficient(double value, const char* which)
 {
-  return static_cast<float>(this->Log.Finite(value, this->Report,
+  const double finite = this->Log.Finite(value, this->Report,
     [&](std::ostream& os)
     {
       os << "The " << this->SideName << " material's " << which << " coefficient " << value
          << " is not finite; it is treated as 0.";
-    }));
+    });
+  return static_cast<float>(this->Log.Bounded(
+    finite, vtkPhongProblemLog::LargestValue,
+    [&](std::ostream& os)
+    { os << "The " << this->SideName << " material's " << which << " coefficient"; },
+    this->Report));
 }
 
 //------------------------------------------------------------------------------

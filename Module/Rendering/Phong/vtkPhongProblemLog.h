@@ -16,7 +16,7 @@
 #ifndef vtkPhongProblemLog_h
 #define vtkPhongProblemLog_h
 
-#include <cmath>   // for std::isfinite
+#include <cmath>   // for std::isfinite, std::abs, std::copysign
 #include <set>     // for std::set
 #include <sstream> // for std::ostringstream
 #include <string>  // for std::string
@@ -67,6 +67,45 @@ public:
   }
 
   /**
+   * The largest magnitude of an uploaded colour, intensity, coefficient or exponent. A value
+   * finite in double can be infinite in float (1e308), and an infinity times a zero in the
+   * shader is NaN; a product of four values up to 1e9 stays finite in float (3.4e38).
+   */
+  static constexpr double LargestValue = 1.0e9;
+
+  /**
+   * The largest magnitude of an uploaded view-space light position: its squared length stays
+   * finite in float.
+   */
+  static constexpr double LargestCoordinate = 1.0e18;
+
+  /**
+   * The largest attenuation coefficient: finite in float. Small scenes need large ones (q
+   * scales as 1 / length^2), and the coefficients only enter the denominator, where a product
+   * too large for float gives 1 / inf = 0, the right limit.
+   */
+  static constexpr double LargestAttenuation = 1.0e30;
+
+  /**
+   * The value when its magnitude is at most largest; otherwise +-largest, and the problem is
+   * logged: describe(stream) names the value ("Light 0 (headlight) diffuse colour times
+   * intensity").
+   */
+  template <typename Describe>
+  double Bounded(double value, double largest, const Describe& describe, bool report = true)
+  {
+    if (!(std::abs(value) > largest))
+    {
+      return value;
+    }
+    if (report)
+    {
+      this->ReportBeyond(value, largest, describe);
+    }
+    return std::copysign(largest, value);
+  }
+
+  /**
    * The logged messages, one per line, in sorted order; the log is empty afterwards.
    */
   std::string Take()
@@ -83,6 +122,20 @@ public:
   std::size_t GetNumberOfProblems() const { return this->Problems.size(); }
 
 private:
+  template <typename Describe>
+  void ReportBeyond(double value, double largest, const Describe& describe)
+  {
+    this->Report(
+      [&](std::ostream& os)
+      {
+        describe(os);
+        os << " " << value << " is beyond " << largest
+           << " in magnitude, more than float arithmetic carries through the lighting; it is "
+              "clamped to "
+           << largest << ".";
+      });
+  }
+
   std::set<std::string> Problems;
 };
 
