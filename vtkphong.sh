@@ -133,6 +133,8 @@ case "$command" in
     with_display "$build/bin/vtkPhongBenchmark" "$build/data/meshes/bunny00.off" \
       "$build/data/meshes/refined_elephant.off"
     "$build/bin/vtkOpenMeshNormalsBenchmark" "$build/data/meshes/refined_elephant.off"
+    PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
+      "$root/Testing/Benchmarks/vtkPhongProgramMemory.py"
     ;;
   study)
     install_packages

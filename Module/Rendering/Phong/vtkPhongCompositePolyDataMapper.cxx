@@ -75,7 +75,7 @@ protected:
   {
     this->Core->BeginUpdateShaders();
     this->Superclass::UpdateShaders(cellBO, ren, act);
-    if (this->Core->EndUpdateShaders(cellBO, this->Reporter()))
+    if (this->Core->EndUpdateShaders(cellBO, ren, this->Reporter()))
     {
       this->Superclass::UpdateShaders(cellBO, ren, act); // now planned with VTK's lighting
     }

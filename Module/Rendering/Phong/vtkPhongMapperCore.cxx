@@ -7,9 +7,16 @@
 #include "vtkOpenGLHelper.h"
 #include "vtkShaderProgram.h"
 
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkRenderer.h"
+#include "vtkWeakPointer.h"
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <list>
 #include <set>
 
 vtkStandardNewMacro(vtkPhongMapperCore);
@@ -25,6 +32,16 @@ struct vtkPhongMapperCore::Internals
   std::set<std::string> FailedSignatures;
   // Hashes of the shader sources handed to the render window's shader cache.
   std::set<std::size_t> KnownSources;
+  // The lighting programs in use, most recently used first, with their window; those
+  // released (the shader cache keeps them and compiles them again on their next use).
+  struct UsedProgram
+  {
+    vtkWeakPointer<vtkShaderProgram> Program;
+    vtkWeakPointer<vtkWindow> Window;
+  };
+  std::list<UsedProgram> RecentPrograms;
+  std::set<const vtkShaderProgram*> Released;
+  int ReleasedPrograms = 0;
   bool BuiltShaders = false;
   std::chrono::steady_clock::time_point UpdateStart;
   std::string ReportedProblems;
@@ -67,7 +84,11 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
   auto& current = this->Internal->Plans[&cellBO];
   const bool changed = current.Signature != plan.Signature;
   current = std::move(plan);
-  return changed;
+  // A program released by the limit on compiled programs (this core's or another's, for
+  // identical sources) is rebuilt through VTK's full path, which also rebinds the vertex
+  // attributes to the new link; compiled behind VTK's back it would draw with stale ones.
+  const bool released = cellBO.Program && !cellBO.Program->GetCompiled();
+  return changed || released;
 }
 
 //------------------------------------------------------------------------------
@@ -96,13 +117,80 @@ void vtkPhongMapperCore::ShadersBuilt(
 }
 
 //------------------------------------------------------------------------------
-bool vtkPhongMapperCore::EndUpdateShaders(vtkOpenGLHelper& cellBO, vtkObject* reporter)
+bool vtkPhongMapperCore::EndUpdateShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkObject* reporter)
 {
   Internals& internal = *this->Internal;
-  if (!internal.BuiltShaders)
+  const bool built = internal.BuiltShaders;
+  const bool failed = built && this->CheckNewProgram(cellBO, reporter);
+  if (!failed && internal.Plans[&cellBO].Handled)
   {
-    return false;
+    this->UseProgram(cellBO.Program, ren);
   }
+  return failed;
+}
+
+//------------------------------------------------------------------------------
+// Move the program to the front of the recently used list; release the programs beyond
+// MaximumNumberOfPrograms from its back.
+void vtkPhongMapperCore::UseProgram(vtkShaderProgram* program, vtkRenderer* ren)
+{
+  Internals& internal = *this->Internal;
+  if (!program)
+  {
+    return;
+  }
+  auto& recent = internal.RecentPrograms;
+  auto found = std::find_if(recent.begin(), recent.end(),
+    [program](const Internals::UsedProgram& used) { return used.Program == program; });
+  if (found != recent.end())
+  {
+    recent.splice(recent.begin(), recent, found);
+    return;
+  }
+  if (internal.Released.erase(program))
+  {
+    ++internal.ShaderCompileCount; // a released program compiled again
+  }
+  recent.push_front({ program, ren->GetRenderWindow() });
+  bool released = false;
+  while (this->MaximumNumberOfPrograms > 0 &&
+    static_cast<int>(recent.size()) > this->MaximumNumberOfPrograms)
+  {
+    Internals::UsedProgram& oldest = recent.back();
+    if (oldest.Program && oldest.Window)
+    {
+      oldest.Program->ReleaseGraphicsResources(oldest.Window);
+      internal.Released.insert(oldest.Program);
+      ++internal.ReleasedPrograms;
+      released = true;
+    }
+    recent.pop_back();
+  }
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (released && window)
+  {
+    // vtkShaderProgram::ReleaseGraphicsResources unbinds whatever program is current
+    // (glUseProgram(0)) while the shader cache still believes the primitive's program is
+    // bound: bind it again, or the primitive draws nothing.
+    window->GetShaderCache()->ClearLastShaderBound();
+    window->GetShaderCache()->ReadyShaderProgram(program);
+  }
+}
+
+//------------------------------------------------------------------------------
+std::size_t vtkPhongMapperCore::HashSources(
+  const std::string& vertex, const std::string& geometry, const std::string& fragment)
+{
+  return std::hash<std::string>{}(vertex + '\n' + geometry + '\n' + fragment);
+}
+
+//------------------------------------------------------------------------------
+// After VTK built the shaders: count a new variant, and report a program that failed to
+// compile (true: the mapper draws the primitive again with VTK's lighting).
+bool vtkPhongMapperCore::CheckNewProgram(vtkOpenGLHelper& cellBO, vtkObject* reporter)
+{
+  Internals& internal = *this->Internal;
   const std::chrono::duration<double> elapsed =
     std::chrono::steady_clock::now() - internal.UpdateStart;
 
@@ -111,8 +199,8 @@ bool vtkPhongMapperCore::EndUpdateShaders(vtkOpenGLHelper& cellBO, vtkObject* re
   {
     internal.Signatures.insert(plan.Signature);
   }
-  const std::size_t sourceHash = std::hash<std::string>{}(internal.LastVertexSource + '\n' +
-    internal.LastGeometrySource + '\n' + internal.LastFragmentSource);
+  const std::size_t sourceHash = HashSources(
+    internal.LastVertexSource, internal.LastGeometrySource, internal.LastFragmentSource);
   if (internal.KnownSources.insert(sourceHash).second)
   {
     ++internal.ShaderCompileCount;
@@ -220,6 +308,23 @@ void vtkPhongMapperCore::ReleaseGraphicsResources()
   // Programs live in the window's shader cache; a new context compiles again.
   this->Internal->KnownSources.clear();
   this->Internal->Plans.clear();
+  this->Internal->RecentPrograms.clear();
+  this->Internal->Released.clear();
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongMapperCore::GetNumberOfReleasedPrograms() const
+{
+  return this->Internal->ReleasedPrograms;
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongMapperCore::GetNumberOfCompiledPrograms() const
+{
+  return static_cast<int>(
+    std::count_if(this->Internal->RecentPrograms.begin(), this->Internal->RecentPrograms.end(),
+      [](const Internals::UsedProgram& used)
+      { return used.Program && used.Program->GetCompiled(); }));
 }
 
 //------------------------------------------------------------------------------
@@ -277,4 +382,7 @@ void vtkPhongMapperCore::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastShaderSignature: " << this->GetLastShaderSignature() << "\n";
   os << indent << "Primitives planned: " << this->Internal->Plans.size() << "\n";
   os << indent << "Failed variants: " << this->Internal->FailedSignatures.size() << "\n";
+  os << indent << "MaximumNumberOfPrograms: " << this->MaximumNumberOfPrograms << "\n";
+  os << indent << "Programs in use: " << this->Internal->RecentPrograms.size() << "\n";
+  os << indent << "Released programs: " << this->Internal->ReleasedPrograms << "\n";
 }

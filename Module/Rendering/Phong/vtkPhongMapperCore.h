@@ -67,7 +67,7 @@ public:
    */
   void BeginUpdateShaders();
   void ShadersBuilt(std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO);
-  bool EndUpdateShaders(vtkOpenGLHelper& cellBO, vtkObject* reporter);
+  bool EndUpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkObject* reporter);
   void ReplaceShaderLight(
     std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO);
   void SetLightUniforms(vtkOpenGLHelper& cellBO, vtkRenderer* ren);
@@ -85,6 +85,19 @@ public:
    * and modification.
    */
   bool HasUnusableVectors(vtkDataArray* normals);
+
+  ///@{
+  /**
+   * The most lighting programs this core keeps compiled: beyond it, the least recently used
+   * one is released (VTK's shader cache keeps its sources and compiles it again if it is
+   * used again). Default 32; 0 keeps every program. Each costs about 1.5 MB on llvmpipe, and
+   * a scene whose structure keeps changing (a light count raised from 1 to 200) would
+   * otherwise keep them all.
+   */
+  int MaximumNumberOfPrograms = 32;
+  int GetNumberOfReleasedPrograms() const;
+  int GetNumberOfCompiledPrograms() const;
+  ///@}
 
   /**
    * Forget the compiled programs (a new context compiles again) and the plans.
@@ -109,6 +122,11 @@ protected:
   ~vtkPhongMapperCore() override;
 
 private:
+  bool CheckNewProgram(vtkOpenGLHelper& cellBO, vtkObject* reporter);
+  void UseProgram(vtkShaderProgram* program, vtkRenderer* ren);
+  static std::size_t HashSources(
+    const std::string& vertex, const std::string& geometry, const std::string& fragment);
+
   vtkPhongMapperCore(const vtkPhongMapperCore&) = delete;
   void operator=(const vtkPhongMapperCore&) = delete;
 

@@ -112,6 +112,18 @@ const char* vtkPhongPolyDataMapper::GetDebugViewAsString()
 }
 
 //------------------------------------------------------------------------------
+int vtkPhongPolyDataMapper::GetNumberOfCompiledShaderPrograms()
+{
+  return this->Internal->Core->GetNumberOfCompiledPrograms();
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongPolyDataMapper::GetNumberOfReleasedShaderPrograms()
+{
+  return this->Internal->Core->GetNumberOfReleasedPrograms();
+}
+
+//------------------------------------------------------------------------------
 int vtkPhongPolyDataMapper::GetShaderCompileCount()
 {
   return this->Internal->Core->GetShaderCompileCount();
@@ -182,6 +194,7 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
   core->Options.DebugView = this->DebugView;
   core->Options.DebugLightIndex = this->DebugLightIndex;
   core->Options.Specialize = this->ShaderSpecialization;
+  core->MaximumNumberOfPrograms = this->MaximumNumberOfShaderPrograms;
   return core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
 }
 
@@ -198,7 +211,7 @@ void vtkPhongPolyDataMapper::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer*
 {
   this->Internal->Core->BeginUpdateShaders();
   this->Superclass::UpdateShaders(cellBO, ren, act);
-  if (this->Internal->Core->EndUpdateShaders(cellBO, this))
+  if (this->Internal->Core->EndUpdateShaders(cellBO, ren, this))
   {
     this->Superclass::UpdateShaders(cellBO, ren, act); // now planned with VTK's lighting
   }
@@ -310,6 +323,7 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalsSplitting: " << (this->NormalsSplitting ? "On" : "Off") << "\n";
   os << indent << "UsedGeneratedNormals: " << (this->UsedGeneratedNormals ? "yes" : "no") << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
+  os << indent << "MaximumNumberOfShaderPrograms: " << this->MaximumNumberOfShaderPrograms << "\n";
   os << indent << "Lighting:\n";
   this->Internal->Core->PrintSelf(os, indent.GetNextIndent());
 }
@@ -326,6 +340,7 @@ void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
     this->SetNormalsFeatureAngle(phong->GetNormalsFeatureAngle());
     this->SetNormalsSplitting(phong->GetNormalsSplitting());
     this->SetShaderSpecialization(phong->GetShaderSpecialization());
+    this->SetMaximumNumberOfShaderPrograms(phong->GetMaximumNumberOfShaderPrograms());
   }
   this->Superclass::ShallowCopy(mapper);
 }

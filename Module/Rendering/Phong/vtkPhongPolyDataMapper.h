@@ -170,6 +170,22 @@ public:
 
   ///@{
   /**
+   * The most lighting shader programs the mapper keeps compiled. Beyond it, the least
+   * recently used program is released: VTK's shader cache keeps its source and compiles it
+   * again (counted in ShaderCompileCount) if the scene needs it again. Default 32, range
+   * [0, 4096]; 0 keeps every program. A program costs about 1.5 MB on llvmpipe; a scene whose
+   * structure keeps changing (a light count raised from 1 to 200) would otherwise keep every
+   * one. NumberOfCompiledShaderPrograms: how many of the mapper's programs are compiled now;
+   * NumberOfReleasedShaderPrograms: how many it released so far.
+   */
+  vtkSetClampMacro(MaximumNumberOfShaderPrograms, int, 0, 4096);
+  vtkGetMacro(MaximumNumberOfShaderPrograms, int);
+  int GetNumberOfCompiledShaderPrograms();
+  int GetNumberOfReleasedShaderPrograms();
+  ///@}
+
+  ///@{
+  /**
    * The lighting signature and the shader sources (before the render window's version and
    * output substitutions) of the last shader this mapper built. The signature lists the
    * features present and the light counts per kind; it is empty for a primitive drawn by
@@ -214,6 +230,7 @@ protected:
   bool NormalsSplitting = true;
   bool UsedGeneratedNormals = false;
   bool ShaderSpecialization = true;
+  int MaximumNumberOfShaderPrograms = 32;
 
 private:
   vtkPhongPolyDataMapper(const vtkPhongPolyDataMapper&) = delete;
