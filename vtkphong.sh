@@ -32,36 +32,25 @@ build="${VTKPHONG_BUILD_DIR:-$root/build}"
 paraview_build="${VTKPHONG_PARAVIEW_BUILD_DIR:-$root/build-paraview}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
-# What each Debian release needs, in one place: the packages (the VTK stage; the ParaView
-# stage: python3-paraview conflicts with python3-vtk9 and is never installed, its .deb is
-# unpacked into the ParaView build tree instead) and ParaView's version, which names its
-# CMake package and plugin directories.
+# What each Debian release needs, in one place, chosen from /etc/os-release: the packages
+# (the VTK stage; the ParaView stage: python3-paraview conflicts with python3-vtk9 and is
+# never installed, its .deb is unpacked into the ParaView build tree instead) and ParaView's
+# version, which names its CMake package and plugin directories. Debian 12 (bookworm): VTK
+# 9.1, ParaView 5.11. Debian 13 (trixie): VTK 9.3, ParaView 5.13, OpenMesh 11, OpenImageIO
+# 2.5, under the same package names (the t64 renames touch only libraries these pull in), so
+# the lists are shared and a release adds its own to them here when that changes.
+packages=(
+  cmake g++ make pkg-config
+  libvtk9-dev python3-vtk9 python3-numpy python3-matplotlib
+  libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
+  xvfb xauth libgl1-mesa-dri
+  libcgal-demo universal-ctags
+)
+paraview_packages=(paraview paraview-dev openmpi-bin)
 release="$(. /etc/os-release && echo "${VERSION_CODENAME:-}")"
 case "$release" in
-  trixie)
-    # VTK 9.3, ParaView 5.13, OpenMesh 11, OpenImageIO 2.5; same package names as bookworm.
-    packages=(
-      cmake g++ make pkg-config
-      libvtk9-dev python3-vtk9 python3-numpy python3-matplotlib
-      libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
-      xvfb xauth libgl1-mesa-dri
-      libcgal-demo universal-ctags
-    )
-    paraview_packages=(paraview paraview-dev openmpi-bin)
-    paraview_version=5.13
-    ;;
-  *)
-    # bookworm (Debian 12): VTK 9.1, ParaView 5.11 (its VTK is 9.2).
-    packages=(
-      cmake g++ make pkg-config
-      libvtk9-dev python3-vtk9 python3-numpy python3-matplotlib
-      libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
-      xvfb xauth libgl1-mesa-dri
-      libcgal-demo universal-ctags
-    )
-    paraview_packages=(paraview paraview-dev openmpi-bin)
-    paraview_version=5.11
-    ;;
+  trixie) paraview_version=5.13 ;;
+  *) paraview_version=5.11 ;; # bookworm
 esac
 
 as_root() {
@@ -161,10 +150,16 @@ debian13_create_root() {
 }
 
 test_debian13() {
-  [ "$(id -u)" -eq 0 ] || { echo "vtkphong.sh test-debian13: run as root (chroot, mount)" >&2; exit 1; }
+  if [ "$(id -u)" -ne 0 ]; then
+    # chroot and mount need root; the environment (root dir, compiler launcher) goes along.
+    command -v sudo >/dev/null 2>&1 || { echo "vtkphong.sh test-debian13: run as root" >&2; exit 1; }
+    exec sudo --preserve-env "$root/vtkphong.sh" test-debian13 "$@"
+  fi
   debian13_create_root
   cp /etc/resolv.conf "$debian13_root/etc/resolv.conf"
+  # Unmount on every way out: a signal exits, and exiting runs the EXIT trap.
   trap debian13_unmount EXIT
+  trap 'exit 130' INT TERM HUP
   debian13_mount proc /proc -t proc
   debian13_mount sysfs /sys -t sysfs
   debian13_mount /dev /dev --bind
@@ -187,7 +182,7 @@ test_debian13() {
     VTKPHONG_PARAVIEW_BUILD_DIR="$root/build-paraview-debian13" \
     "$root/vtkphong.sh" "${1:-test}" || status=$?
   debian13_unmount
-  trap - EXIT
+  trap - EXIT INT TERM HUP
   return "$status"
 }
 
