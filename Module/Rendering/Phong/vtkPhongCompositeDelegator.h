@@ -20,8 +20,7 @@
 
 class vtkPhongMapperCore;
 
-class vtkPhongCompositeDelegator
-  : public vtkOpenGLCompositePolyDataMapperDelegator
+class vtkPhongCompositeDelegator : public vtkOpenGLCompositePolyDataMapperDelegator
 {
 public:
   static vtkPhongCompositeDelegator* New();

@@ -1,9 +1,9 @@
 // The composite path (what ParaView draws with): a multiblock of a floor and three
 // spheres above it, one with its own block colour and one with point scalars (so two helpers draw
-// it; then one with its own block opacity too), lit by a directional, a point and a spot light with a Blinn-Phong lobe sharper than
-// vtkProperty allows. It must draw exactly what vtkPhongPolyDataMapper draws for the same
-// blocks as separate actors (one implementation, two entry points), recompile on
-// structure and not on values, and match the baseline.
+// it; then one with its own block opacity too), lit by a directional, a point and a spot light with
+// a Blinn-Phong lobe sharper than vtkProperty allows. It must draw exactly what
+// vtkPhongPolyDataMapper draws for the same blocks as separate actors (one implementation, two
+// entry points), recompile on structure and not on values, and match the baseline.
 
 #include "vtkPhongTestUtilities.h"
 
