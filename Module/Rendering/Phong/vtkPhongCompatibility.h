@@ -35,8 +35,10 @@ namespace vtkPhongCompatibility
  * null program. VTK 9.3 keeps the previous program instead (and reports "Could not set
  * shader program"), so the failure would go unseen and the previous variant drawn: the
  * program is forgotten first, which VTK 9.3 tolerates (it then skips the uniforms, and the
- * next rebuild starts from no program). Before 9.3 a failed build with no previous program
- * would dereference it, so nothing is done there.
+ * next rebuild starts from no program). The price: a rebuild that gets the same program from
+ * the shader cache (VTK rebuilds when the property changes) binds the vertex attributes again,
+ * which is cheap next to the rebuild itself. Before 9.3 a failed build with no previous
+ * program would dereference it, so nothing is done there.
  */
 inline void ForgetProgramBeforeBuild(vtkOpenGLHelper& cellBO)
 {
