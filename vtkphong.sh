@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# vtkPhong's one entry point on Debian 12: installs what is missing (apt),
-# configures and builds, then does the job asked for.
+# vtkPhong's one entry point on Debian 12 (bookworm) and Debian 13 (trixie): installs what
+# is missing (apt), configures and builds, then does the job asked for.
 #
 #   ./vtkphong.sh render   render the default scene (CGAL's bunny, three lights,
 #                          Blinn-Phong) and print the image's path
@@ -10,9 +10,15 @@
 #                          the double-precision reference) and print its table
 #   ./vtkphong.sh study    regenerate the speed/accuracy trade study
 #                          (docs/results/tradeoff.md, .csv and .png)
-#   ./vtkphong.sh paraview build the ParaView 5.11 plugin against paraview-dev's VTK
-#                          (into ./build-paraview) and run its pvbatch / MPI / pvserver
-#                          tests; `test` runs this stage too after the VTK tests
+#   ./vtkphong.sh paraview build the ParaView plugin against paraview-dev's VTK (5.11 on
+#                          Debian 12, 5.13 on Debian 13; into ./build-paraview) and run its
+#                          pvbatch / MPI / pvserver tests; `test` runs this stage too
+#   ./vtkphong.sh test-debian13 [command]
+#                          run `test` (or another command of this script) on Debian 13
+#                          (VTK 9.3, ParaView 5.13) from a Debian 12 host: a trixie root made
+#                          by debootstrap (VTKPHONG_DEBIAN13_ROOT, default
+#                          /var/tmp/vtkphong/trixie), this tree bind-mounted into it, builds
+#                          in ./build-debian13 and ./build-paraview-debian13
 #   ./vtkphong.sh test-asan
 #                          build with AddressSanitizer + UndefinedBehaviorSanitizer
 #                          (into ./build-asan) and run the C++ tests; any report in
@@ -30,6 +36,13 @@ build="${VTKPHONG_BUILD_DIR:-$root/build}"
 paraview_build="${VTKPHONG_PARAVIEW_BUILD_DIR:-$root/build-paraview}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
+# What each Debian release needs, in one place, chosen from /etc/os-release: the packages
+# (the VTK stage; the ParaView stage: python3-paraview conflicts with python3-vtk9 and is
+# never installed, its .deb is unpacked into the ParaView build tree instead) and ParaView's
+# version, which names its CMake package and plugin directories. Debian 12 (bookworm): VTK
+# 9.1, ParaView 5.11. Debian 13 (trixie): VTK 9.3, ParaView 5.13, OpenMesh 11, OpenImageIO
+# 2.5, under the same package names (the t64 renames touch only libraries these pull in), so
+# the lists are shared and a release adds its own to them here when that changes.
 packages=(
   cmake g++ make pkg-config
   libvtk9-dev python3-vtk9 python3-numpy python3-matplotlib
@@ -37,9 +50,12 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   libcgal-demo universal-ctags
 )
-# The ParaView stage. python3-paraview conflicts with python3-vtk9 and is never
-# installed: its .deb is unpacked into the ParaView build tree instead.
 paraview_packages=(paraview paraview-dev openmpi-bin)
+release="$(. /etc/os-release && echo "${VERSION_CODENAME:-}")"
+case "$release" in
+  trixie) paraview_version=5.13 ;;
+  *) paraview_version=5.11 ;; # bookworm
+esac
 
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then
@@ -85,7 +101,8 @@ build_paraview_plugin() {
     dpkg-deb -x "$paraview_build"/deb/python3-paraview_*.deb "$unpacked"
   fi
   cmake -S "$root" -B "$paraview_build" -DCMAKE_BUILD_TYPE=Release -Wno-dev \
-    -DVTKPHONG_PARAVIEW=ON -DVTKPHONG_PARAVIEW_PYTHON_ROOT="$unpacked"
+    -DVTKPHONG_PARAVIEW=ON -DVTKPHONG_PARAVIEW_PYTHON_ROOT="$unpacked" \
+    -DVTKPHONG_PARAVIEW_VERSION="$paraview_version"
   cmake --build "$paraview_build" -j "$jobs"
 }
 
@@ -120,6 +137,81 @@ with_display() {
   xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
 }
 
+# Debian 13 from a Debian 12 host: a trixie root (debootstrap, made once and reused), this
+# tree bind-mounted into it at the same path, and `./vtkphong.sh test` run inside, which
+# installs trixie's packages with apt in the root. Mounts are undone whatever happens.
+debian13_root="${VTKPHONG_DEBIAN13_ROOT:-/var/tmp/vtkphong/trixie}"
+debian13_mounts=()
+
+debian13_unmount() {
+  local i
+  for ((i = ${#debian13_mounts[@]} - 1; i >= 0; i--)); do
+    umount "${debian13_mounts[i]}" 2>/dev/null || umount -l "${debian13_mounts[i]}" || true
+  done
+  debian13_mounts=()
+}
+
+debian13_mount() { # debian13_mount SOURCE TARGET-IN-ROOT [mount options...]
+  local source="$1" target="$debian13_root$2"
+  shift 2
+  mkdir -p "$target"
+  mount "$@" "$source" "$target"
+  debian13_mounts+=("$target")
+}
+
+debian13_create_root() {
+  [ -f "$debian13_root/.vtkphong-root" ] && return 0
+  command -v debootstrap >/dev/null 2>&1 ||
+    { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y debootstrap; }
+  # Into a scratch directory first: an interrupted debootstrap is never mistaken for a root.
+  local partial="$debian13_root.partial"
+  rm -rf "$partial"
+  mkdir -p "$(dirname "$debian13_root")"
+  debootstrap --variant=minbase trixie "$partial" http://deb.debian.org/debian
+  # Services never start in the root (package scripts ask policy-rc.d).
+  printf '#!/bin/sh\nexit 101\n' >"$partial/usr/sbin/policy-rc.d"
+  chmod +x "$partial/usr/sbin/policy-rc.d"
+  touch "$partial/.vtkphong-root"
+  mv "$partial" "$debian13_root"
+}
+
+test_debian13() {
+  if [ "$(id -u)" -ne 0 ]; then
+    # chroot and mount need root; the environment (root dir, compiler launcher) goes along.
+    command -v sudo >/dev/null 2>&1 || { echo "vtkphong.sh test-debian13: run as root" >&2; exit 1; }
+    exec sudo --preserve-env "$root/vtkphong.sh" test-debian13 "$@"
+  fi
+  debian13_create_root
+  cp /etc/resolv.conf "$debian13_root/etc/resolv.conf"
+  # Unmount on every way out: a signal exits, and exiting runs the EXIT trap.
+  trap debian13_unmount EXIT
+  trap 'exit 130' INT TERM HUP
+  debian13_mount proc /proc -t proc
+  debian13_mount sysfs /sys -t sysfs
+  debian13_mount /dev /dev --bind
+  debian13_mount /dev/pts /dev/pts --bind
+  debian13_mount /dev/shm /dev/shm --bind
+  debian13_mount "$root" "$root" --bind
+  local launcher=()
+  if [ -n "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ] && [ -d "${CCACHE_DIR:-$HOME/.ccache}" ]; then
+    # Share the host's compiler cache (its base_dir makes hits path-independent).
+    debian13_mount "${CCACHE_DIR:-$HOME/.ccache}" /root/.ccache --bind
+    chroot "$debian13_root" sh -c 'command -v ccache >/dev/null' ||
+      chroot "$debian13_root" env DEBIAN_FRONTEND=noninteractive \
+        sh -c 'apt-get update && apt-get install -y --no-install-recommends ccache'
+    launcher=(CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache)
+  fi
+  local status=0
+  chroot "$debian13_root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 \
+    PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin "${launcher[@]}" \
+    VTKPHONG_BUILD_DIR="$root/build-debian13" \
+    VTKPHONG_PARAVIEW_BUILD_DIR="$root/build-paraview-debian13" \
+    "$root/vtkphong.sh" "${1:-test}" || status=$?
+  debian13_unmount
+  trap - EXIT INT TERM HUP
+  return "$status"
+}
+
 command="${1:-}"
 case "$command" in
   render)
@@ -141,10 +233,13 @@ case "$command" in
     build_paraview_plugin
     run_paraview_tests
     ;;
+  test-debian13)
+    test_debian13 "${2:-test}"
+    ;;
   paraview-bench)
     install_packages "${paraview_packages[@]}"
     build_paraview_plugin
-    plugin="$paraview_build/lib/paraview-5.11/plugins/PhongLighting/PhongLighting.so"
+    plugin="$paraview_build/lib/paraview-$paraview_version/plugins/PhongLighting/PhongLighting.so"
     export PYTHONPATH="$paraview_build/python3-paraview/usr/lib/python3/dist-packages"
     for ranks in 1 2; do
       with_display timeout 900 mpiexec --allow-run-as-root --oversubscribe -np "$ranks" \
@@ -181,7 +276,7 @@ case "$command" in
       -T "$build/Testing/Temporary"
     ;;
   *)
-    sed -n '2,22p' "$0" >&2
+    sed -n '2,27p' "$0" >&2
     exit 2
     ;;
 esac

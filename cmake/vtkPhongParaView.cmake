@@ -1,4 +1,5 @@
-# Finds Debian 12's ParaView 5.11 (paraview-dev) and, through it, the VTK 9.2 it bundles.
+# Finds Debian's ParaView (paraview-dev) and, through it, the VTK it bundles: ParaView 5.11
+# with a VTK 9.2 snapshot on Debian 12, ParaView 5.13 with VTK 9.3 on Debian 13.
 #
 # Two Debian traps are handled here:
 #
@@ -13,17 +14,33 @@
 #   apt-get download + dpkg-deb -x); the module targets are pointed at its hierarchy files.
 #   pvbatch finds ParaView's Python package there too (PYTHONPATH, see ParaView/).
 
-set(VTKPHONG_PARAVIEW_CMAKE_DIR "/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11"
+# The version names paraview-dev's directories (CMake package, plugins); by default the one
+# installed.
+file(GLOB vtkphong_paraview_dirs LIST_DIRECTORIES true "/usr/lib/x86_64-linux-gnu/cmake/paraview-5.*")
+set(vtkphong_paraview_version "5.11")
+if (vtkphong_paraview_dirs)
+  list(GET vtkphong_paraview_dirs 0 vtkphong_paraview_dir)
+  string(REGEX REPLACE "^.*/paraview-" "" vtkphong_paraview_version "${vtkphong_paraview_dir}")
+endif ()
+set(VTKPHONG_PARAVIEW_VERSION "${vtkphong_paraview_version}"
+  CACHE STRING "ParaView's major.minor version (5.11 on Debian 12, 5.13 on Debian 13)")
+set(VTKPHONG_PARAVIEW_CMAKE_DIR
+  "/usr/lib/x86_64-linux-gnu/cmake/paraview-${VTKPHONG_PARAVIEW_VERSION}"
   CACHE PATH "paraview-dev's CMake package directory")
 set(VTKPHONG_PARAVIEW_PYTHON_ROOT "${CMAKE_BINARY_DIR}/python3-paraview"
   CACHE PATH "Where python3-paraview's .deb is unpacked (dpkg-deb -x)")
 
+# ParaView 5.13 adds the incubator's Python modules, also in python3-paraview.
 foreach (targets_file IN ITEMS
     "${VTKPHONG_PARAVIEW_CMAKE_DIR}/vtk/VTKPython-targets.cmake"
     "${VTKPHONG_PARAVIEW_CMAKE_DIR}/ParaViewPython-targets.cmake"
-    "${VTKPHONG_PARAVIEW_CMAKE_DIR}/ParaViewTools-targets.cmake")
+    "${VTKPHONG_PARAVIEW_CMAKE_DIR}/ParaViewTools-targets.cmake"
+    "${VTKPHONG_PARAVIEW_CMAKE_DIR}/ParaViewPythonIncubator-targets.cmake")
   if (NOT EXISTS "${targets_file}")
-    message(FATAL_ERROR "${targets_file} is missing: install paraview-dev (Debian 12).")
+    if (targets_file MATCHES "Incubator")
+      continue ()
+    endif ()
+    message(FATAL_ERROR "${targets_file} is missing: install paraview-dev.")
   endif ()
   file(STRINGS "${targets_file}" expected REGEX "^foreach\\(_cmake_expected_target IN ITEMS ")
   string(REGEX REPLACE "^foreach\\(_cmake_expected_target IN ITEMS (.*)\\)$" "\\1"
@@ -38,11 +55,18 @@ endforeach ()
 
 # ParaView's VTK::Python target links Python3::Module without finding it.
 find_package(Python3 REQUIRED COMPONENTS Interpreter Development.Module)
-find_package(ParaView 5.11 REQUIRED
+find_package(ParaView "${VTKPHONG_PARAVIEW_VERSION}" REQUIRED
   PATHS "${VTKPHONG_PARAVIEW_CMAKE_DIR}" NO_DEFAULT_PATH
   COMPONENTS
     RemotingViews
     VTKExtensionsFiltersRendering)
+# ParaView 5.13's VTK::hdf5 and VTK::netcdf, linked through RemotingViews, name HDF5's and
+# netCDF's own targets, which its VTK package finds only when those components are asked for.
+if (TARGET VTK::hdf5 AND NOT TARGET hdf5::hdf5)
+  find_package(VTK REQUIRED
+    PATHS "${VTKPHONG_PARAVIEW_CMAKE_DIR}/vtk" NO_DEFAULT_PATH
+    COMPONENTS hdf5 netcdf)
+endif ()
 message(STATUS "vtkPhong: building against ParaView ${ParaView_VERSION} (VTK ${VTK_VERSION})")
 
 set(hierarchy_root "${VTKPHONG_PARAVIEW_PYTHON_ROOT}/usr/lib/x86_64-linux-gnu/vtk/hierarchy")

@@ -33,7 +33,7 @@ function (vtkphong_add_python_tests)
         -B "${arg_BASELINES}"
         -T "${VTKPHONG_TEST_OUTPUT_DIR}")
     set_tests_properties("vtkPhongPython-${test}" PROPERTIES
-      ENVIRONMENT "PYTHONPATH=${VTKPHONG_BUILD_PYTHONPATH}:${VTKPHONG_TESTING_CORE_DIR}"
+      ENVIRONMENT "PYTHONPATH=${VTKPHONG_BUILD_PYTHONPATH}:${VTKPHONG_TESTING_CORE_DIR};VTKPHONG_VTK_CHANGES=${VTKPHONG_VTK_CHANGES}"
       FAIL_REGULAR_EXPRESSION "(\n|^)ERROR: ;ERR\\|;Traceback")
   endforeach ()
 endfunction ()

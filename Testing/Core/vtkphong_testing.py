@@ -20,6 +20,12 @@ STRICT_LEVELS = 6
 STRICT_PIXEL_BUDGET = 24
 
 
+def vtk_changed(change):
+    """Whether the VTK under test has `change`, one of the per-version facts that
+    cmake/vtkPhongVersions.cmake names (VTKPHONG_VTK_CHANGES)."""
+    return change in os.environ.get("VTKPHONG_VTK_CHANGES", "").split(",")
+
+
 def arguments():
     parser = argparse.ArgumentParser()
     parser.add_argument("-B", dest="baselines", required=True)

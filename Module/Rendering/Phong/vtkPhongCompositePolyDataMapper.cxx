@@ -1,202 +1,123 @@
 #include "vtkPhongCompositePolyDataMapper.h"
 
+#include "vtkObjectFactory.h"
+#include "vtkPhongCompatibility.h"
+#include "vtkPhongMapperCore.h"
+#include "vtkWeakPointer.h"
+
+#if VTKPHONG_VTK_9_3
+#include "vtkPhongCompositeDelegator.h"
+#else
 // VTK 9.1's vtkCompositeMapperHelper2.h uses these without including them.
 #include "vtkColor.h"
 #include "vtkHardwareSelector.h"
 #include "vtk_glew.h"
 
-#include "vtkActor.h"
-#include "vtkCellData.h"
 #include "vtkCompositeMapperHelper2.h"
-#include "vtkObjectFactory.h"
-#include "vtkOpenGLHelper.h"
-#include "vtkOpenGLVertexBufferObjectGroup.h"
-#include "vtkPhongMapperCore.h"
-#include "vtkPointData.h"
-#include "vtkPolyData.h"
-#include "vtkShaderProperty.h"
+#include "vtkPhongBlockMapper.h"
+#endif
 
-//------------------------------------------------------------------------------
-// The helper that draws the blocks: VTK's composite helper, its lighting handed to
-// vtkPhongMapperCore exactly as vtkPhongPolyDataMapper does.
-class vtkPhongCompositeMapperHelper : public vtkCompositeMapperHelper2
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
+struct vtkPhongCompositePolyDataMapper::Internals
 {
-public:
-  static vtkPhongCompositeMapperHelper* New();
-  vtkTypeMacro(vtkPhongCompositeMapperHelper, vtkCompositeMapperHelper2);
+  // The helpers made so far, with their cores. The superclass deletes the helpers it no
+  // longer needs (and, on VTK 9.3, keeps them out of reach): their entries then expire.
+  std::vector<std::pair<vtkWeakPointer<vtkObject>, vtkPhongMapperCore*>> Helpers;
+  std::string LastSignature;
 
-  vtkPhongMapperCore* GetCore() { return this->Core; }
-
-  void ReleaseGraphicsResources(vtkWindow* window) override
+  void Add(vtkObject* helper, vtkPhongMapperCore* core)
   {
-    this->Core->ReleaseGraphicsResources();
-    this->Superclass::ReleaseGraphicsResources(window);
+    this->Prune();
+    this->Helpers.emplace_back(helper, core);
   }
 
-protected:
-  vtkPhongCompositeMapperHelper() = default;
-  ~vtkPhongCompositeMapperHelper() override = default;
-
-  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
+  void Prune()
   {
-    const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+    auto expired = [](const std::pair<vtkWeakPointer<vtkObject>, vtkPhongMapperCore*>& helper)
+    { return helper.first == nullptr; };
+    this->Helpers.erase(
+      std::remove_if(this->Helpers.begin(), this->Helpers.end(), expired), this->Helpers.end());
+  }
 
-    // As vtkPhongPolyDataMapper reads it, except that the normals of every block share
-    // the vertex buffer, so every block's normals are scanned.
-    vtkPhongShaderBuilder::PrimitiveState state;
-    state.LightComplexity = this->PrimitiveInfo[&cellBO].LastLightComplexity;
-    state.IsTriangles =
-      cellBO.PrimitiveType == PrimitiveTris || cellBO.PrimitiveType == PrimitiveTriStrips;
-    state.HasPointNormals = this->VBOs->GetNumberOfComponents("normalMC") == 3;
-    state.HasCellNormals = this->HaveCellNormals;
-    for (const auto& block : this->Data)
+  // A statistic of the helpers' cores, summed.
+  int Sum(int (vtkPhongMapperCore::*statistic)() const)
+  {
+    this->Prune();
+    int sum = 0;
+    for (const auto& helper : this->Helpers)
     {
-      vtkDataArray* normals = state.HasPointNormals ? block.first->GetPointData()->GetNormals()
-                                                    : block.first->GetCellData()->GetNormals();
-      state.NormalsMayBeInvalid =
-        state.NormalsMayBeInvalid || this->Core->HasUnusableVectors(normals);
+      sum += (helper.second->*statistic)();
     }
-    state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
-    state.HasGeometryShader = this->DrawingEdges(ren, act) || this->HaveWideLines(ren, act) ||
-      act->GetShaderProperty()->HasGeometryShaderCode();
-    state.DrawingVertices = this->DrawingVertices;
-    state.DrawingSelection = this->DrawingSelection;
-
-    if (auto* parent = vtkPhongCompositePolyDataMapper::SafeDownCast(this->Parent))
-    {
-      this->Core->Options.DebugView = parent->GetDebugView();
-      this->Core->Options.DebugLightIndex = parent->GetDebugLightIndex();
-      this->Core->Options.Specialize = parent->GetShaderSpecialization();
-    }
-    return this->Core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
+    return sum;
   }
-
-  void UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
-  {
-    this->Core->BeginUpdateShaders();
-    this->Superclass::UpdateShaders(cellBO, ren, act);
-    if (this->Core->EndUpdateShaders(cellBO, ren, this->Reporter()))
-    {
-      this->Superclass::UpdateShaders(cellBO, ren, act); // now planned with VTK's lighting
-    }
-  }
-
-  void BuildShaders(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
-  {
-    this->Superclass::BuildShaders(shaders, ren, act);
-    this->Core->ShadersBuilt(shaders, this->LastBoundBO);
-  }
-
-  void ReplaceShaderLight(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
-  {
-    if (!this->Core->Handles(this->LastBoundBO))
-    {
-      this->Superclass::ReplaceShaderLight(shaders, ren, act);
-      return;
-    }
-    this->Core->ReplaceShaderLight(shaders, this->LastBoundBO);
-  }
-
-  void SetLightingShaderParameters(
-    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
-  {
-    if (!this->Core->Handles(&cellBO))
-    {
-      this->Superclass::SetLightingShaderParameters(cellBO, ren, act);
-      return;
-    }
-    this->Core->SetLightUniforms(cellBO, ren);
-  }
-
-  void SetPropertyShaderParameters(
-    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
-  {
-    this->Superclass::SetPropertyShaderParameters(cellBO, ren, act);
-    if (this->Core->Handles(&cellBO))
-    {
-      this->Core->SetMaterialUniforms(cellBO);
-    }
-  }
-
-  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override
-  {
-    this->Superclass::RenderPieceFinish(ren, act);
-    this->Core->ReportProblems(this->Reporter());
-  }
-
-  // Errors name the mapper the user made, not its helper.
-  vtkObject* Reporter() { return this->Parent ? static_cast<vtkObject*>(this->Parent) : this; }
-
-  vtkNew<vtkPhongMapperCore> Core;
-
-private:
-  vtkPhongCompositeMapperHelper(const vtkPhongCompositeMapperHelper&) = delete;
-  void operator=(const vtkPhongCompositeMapperHelper&) = delete;
 };
-
-vtkStandardNewMacro(vtkPhongCompositeMapperHelper);
 
 //------------------------------------------------------------------------------
 vtkStandardNewMacro(vtkPhongCompositePolyDataMapper);
 
 //------------------------------------------------------------------------------
-vtkPhongCompositePolyDataMapper::vtkPhongCompositePolyDataMapper() = default;
+vtkPhongCompositePolyDataMapper::vtkPhongCompositePolyDataMapper()
+  : Internal(new Internals)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkPhongCompositePolyDataMapper::~vtkPhongCompositePolyDataMapper() = default;
 
+#if VTKPHONG_VTK_9_3
+//------------------------------------------------------------------------------
+vtkCompositePolyDataMapperDelegator* vtkPhongCompositePolyDataMapper::CreateADelegator()
+{
+  vtkPhongCompositeDelegator* delegator = vtkPhongCompositeDelegator::New();
+  this->Internal->Add(delegator->GetDelegate(), delegator->GetCore());
+  return delegator;
+}
+#else
 //------------------------------------------------------------------------------
 vtkCompositeMapperHelper2* vtkPhongCompositePolyDataMapper::CreateHelper()
 {
-  return vtkPhongCompositeMapperHelper::New();
+  auto* helper = vtkPhongBlockMapper<vtkCompositeMapperHelper2>::New();
+  this->Internal->Add(helper, helper->GetCore());
+  return helper;
 }
+#endif
 
 //------------------------------------------------------------------------------
-namespace
+int vtkPhongCompositePolyDataMapper::GetNumberOfHelpers()
 {
-// A statistic of the helpers' cores, summed.
-int SumOverHelpers(const std::map<const std::string, vtkCompositeMapperHelper2*>& helpers,
-  int (vtkPhongMapperCore::*statistic)() const)
-{
-  int sum = 0;
-  for (const auto& helper : helpers)
-  {
-    if (auto* phong = vtkPhongCompositeMapperHelper::SafeDownCast(helper.second))
-    {
-      sum += (phong->GetCore()->*statistic)();
-    }
-  }
-  return sum;
-}
+  this->Internal->Prune();
+  return static_cast<int>(this->Internal->Helpers.size());
 }
 
 //------------------------------------------------------------------------------
 int vtkPhongCompositePolyDataMapper::GetShaderCompileCount()
 {
-  return SumOverHelpers(this->Helpers, &vtkPhongMapperCore::GetShaderCompileCount);
+  return this->Internal->Sum(&vtkPhongMapperCore::GetShaderCompileCount);
 }
 
 //------------------------------------------------------------------------------
 int vtkPhongCompositePolyDataMapper::GetNumberOfShaderVariants()
 {
-  return SumOverHelpers(this->Helpers, &vtkPhongMapperCore::GetNumberOfShaderVariants);
+  return this->Internal->Sum(&vtkPhongMapperCore::GetNumberOfShaderVariants);
 }
 
 //------------------------------------------------------------------------------
 const char* vtkPhongCompositePolyDataMapper::GetLastShaderSignature()
 {
-  this->LastSignature.clear();
-  for (const auto& helper : this->Helpers)
+  this->Internal->Prune();
+  this->Internal->LastSignature.clear();
+  for (const auto& helper : this->Internal->Helpers)
   {
-    auto* phong = vtkPhongCompositeMapperHelper::SafeDownCast(helper.second);
-    if (phong && !phong->GetCore()->GetLastShaderSignature().empty())
+    if (!helper.second->GetLastShaderSignature().empty())
     {
-      this->LastSignature = phong->GetCore()->GetLastShaderSignature();
+      this->Internal->LastSignature = helper.second->GetLastShaderSignature();
     }
   }
-  return this->LastSignature.c_str();
+  return this->Internal->LastSignature.c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -206,7 +127,7 @@ void vtkPhongCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DebugView: " << this->DebugView << "\n";
   os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
-  os << indent << "NumberOfHelpers: " << this->Helpers.size() << "\n";
+  os << indent << "NumberOfHelpers: " << this->GetNumberOfHelpers() << "\n";
   os << indent << "ShaderCompileCount: " << this->GetShaderCompileCount() << "\n";
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";
   os << indent << "LastShaderSignature: " << this->GetLastShaderSignature() << "\n";

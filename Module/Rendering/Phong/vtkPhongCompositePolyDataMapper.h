@@ -3,11 +3,15 @@
  * @brief   vtkPhong's lighting for composite datasets (multiblock, partitioned), as ParaView draws
  * them
  *
- * vtkPhongCompositePolyDataMapper is a vtkCompositePolyDataMapper2 whose helpers (the
- * polydata mappers that draw the blocks, grouped by what arrays they carry) light with the
- * same generated shaders as vtkPhongPolyDataMapper: the helpers forward their shader
- * overrides to the same vtkPhongMapperCore and vtkPhongShaderBuilder, so there is one
- * implementation with two entry points. Per-block colours, opacities and visibilities of
+ * vtkPhongCompositePolyDataMapper is VTK's composite mapper whose helpers (the polydata
+ * mappers that draw the blocks, grouped by what arrays they carry) light with the same
+ * generated shaders as vtkPhongPolyDataMapper: the helpers forward their shader overrides to
+ * the same vtkPhongMapperCore and vtkPhongShaderBuilder, so there is one implementation with
+ * two entry points. Which composite mapper depends on the VTK version: before VTK 9.3 it is a
+ * vtkCompositePolyDataMapper2 (the helpers are vtkCompositeMapperHelper2); from VTK 9.3 on,
+ * where that class is deprecated and ParaView draws with vtkCompositePolyDataMapper, it is a
+ * vtkCompositePolyDataMapper whose delegators' batched mappers are the helpers
+ * (docs/compatibility.md). Per-block colours, opacities and visibilities of
  * vtkCompositeDataDisplayAttributes keep working (the lighting then reads VTK's per-block
  * colour variables instead of ready-made material products).
  *
@@ -17,23 +21,36 @@
  * vtkOpenMeshNormals upstream (it runs on every block of a composite dataset) for smooth
  * shading of blocks without normals.
  *
- * @sa vtkPhongPolyDataMapper vtkCompositePolyDataMapper2 vtkOpenMeshNormals
+ * @sa vtkPhongPolyDataMapper vtkCompositePolyDataMapper vtkCompositePolyDataMapper2
+ * vtkOpenMeshNormals
  */
 
 #ifndef vtkPhongCompositePolyDataMapper_h
 #define vtkPhongCompositePolyDataMapper_h
 
-#include "vtkCompositePolyDataMapper2.h"
 #include "vtkPhongPolyDataMapper.h"  // for the DebugViews values
 #include "vtkRenderingPhongModule.h" // for export macro
+#include "vtkVersionMacros.h"        // for VTK_VERSION_NUMBER
 
-#include <string> // for std::string
+#include <memory> // for std::unique_ptr
 
-class VTKRENDERINGPHONG_EXPORT vtkPhongCompositePolyDataMapper : public vtkCompositePolyDataMapper2
+// The superclass by VTK version, as vtkPhongCompatibility.h (private) explains.
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+#include "vtkCompositePolyDataMapper.h" // for the superclass
+#define VTKPHONG_COMPOSITE_SUPERCLASS vtkCompositePolyDataMapper
+class vtkCompositePolyDataMapperDelegator;
+#else
+#include "vtkCompositePolyDataMapper2.h" // for the superclass
+#define VTKPHONG_COMPOSITE_SUPERCLASS vtkCompositePolyDataMapper2
+class vtkCompositeMapperHelper2;
+#endif
+
+class VTKRENDERINGPHONG_EXPORT vtkPhongCompositePolyDataMapper
+  : public VTKPHONG_COMPOSITE_SUPERCLASS
 {
 public:
   static vtkPhongCompositePolyDataMapper* New();
-  vtkTypeMacro(vtkPhongCompositePolyDataMapper, vtkCompositePolyDataMapper2);
+  vtkTypeMacro(vtkPhongCompositePolyDataMapper, VTKPHONG_COMPOSITE_SUPERCLASS);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -78,13 +95,22 @@ public:
   /**
    * The number of helpers (polydata mappers) drawing the blocks now.
    */
-  int GetNumberOfHelpers() { return static_cast<int>(this->Helpers.size()); }
+  int GetNumberOfHelpers();
 
 protected:
   vtkPhongCompositePolyDataMapper();
   ~vtkPhongCompositePolyDataMapper() override;
 
+  ///@{
+  /**
+   * Make a helper that lights with vtkPhong (VTK 9.3: the delegator of a helper).
+   */
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+  vtkCompositePolyDataMapperDelegator* CreateADelegator() override;
+#else
   vtkCompositeMapperHelper2* CreateHelper() override;
+#endif
+  ///@}
 
   int DebugView = vtkPhongPolyDataMapper::Final;
   int DebugLightIndex = 0;
@@ -94,7 +120,10 @@ private:
   vtkPhongCompositePolyDataMapper(const vtkPhongCompositePolyDataMapper&) = delete;
   void operator=(const vtkPhongCompositePolyDataMapper&) = delete;
 
-  std::string LastSignature;
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
 };
+
+#undef VTKPHONG_COMPOSITE_SUPERCLASS
 
 #endif

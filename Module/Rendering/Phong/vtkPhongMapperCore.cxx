@@ -5,6 +5,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
+#include "vtkPhongCompatibility.h"
 #include "vtkShaderProgram.h"
 
 #include "vtkOpenGLRenderWindow.h"
@@ -107,8 +108,10 @@ void vtkPhongMapperCore::BeginUpdateShaders()
 
 //------------------------------------------------------------------------------
 void vtkPhongMapperCore::ShadersBuilt(
-  std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO)
+  std::map<vtkShader::Type, vtkShader*>& shaders, vtkOpenGLHelper* cellBO)
 {
+  // EndUpdateShaders recognizes a failed build by the null program it leaves.
+  vtkPhongCompatibility::ForgetProgramBeforeBuild(*cellBO);
   this->Internal->BuiltShaders = true;
   this->Internal->LastVertexSource = shaders[vtkShader::Vertex]->GetSource();
   this->Internal->LastGeometrySource = shaders[vtkShader::Geometry]->GetSource();

@@ -63,10 +63,11 @@ public:
    * BeginUpdateShaders() before the stock UpdateShaders, EndUpdateShaders() after it; when
    * EndUpdateShaders returns true the variant failed to compile (the error is reported on
    * `reporter`) and the mapper calls the stock UpdateShaders once more, which now plans the
-   * primitive with VTK's lighting.
+   * primitive with VTK's lighting. ShadersBuilt() (from BuildShaders, after the stock one)
+   * keeps the sources and makes a failed build visible whatever the VTK version.
    */
   void BeginUpdateShaders();
-  void ShadersBuilt(std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO);
+  void ShadersBuilt(std::map<vtkShader::Type, vtkShader*>& shaders, vtkOpenGLHelper* cellBO);
   bool EndUpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkObject* reporter);
   void ReplaceShaderLight(
     std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO);

@@ -1,6 +1,5 @@
 #include "vtkPhongSurfaceRepresentation.h"
 
-#include "vtkCompositePolyDataMapper2.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenMeshNormals.h"
 #include "vtkPVLODActor.h"

@@ -1,9 +1,9 @@
 // The composite path (what ParaView draws with): a multiblock of a floor and three
 // spheres above it, one with its own block colour and one with point scalars (so two helpers draw
-// it), lit by a directional, a point and a spot light with a Blinn-Phong lobe sharper than
-// vtkProperty allows. It must draw exactly what vtkPhongPolyDataMapper draws for the same
-// blocks as separate actors (one implementation, two entry points), recompile on
-// structure and not on values, and match the baseline.
+// it; then one with its own block opacity too), lit by a directional, a point and a spot light with
+// a Blinn-Phong lobe sharper than vtkProperty allows. It must draw exactly what
+// vtkPhongPolyDataMapper draws for the same blocks as separate actors (one implementation, two
+// entry points), recompile on structure and not on values, and match the baseline.
 
 #include "vtkPhongTestUtilities.h"
 
@@ -179,6 +179,42 @@ int TestPhongCompositePolyDataMapper(int argc, char* argv[])
   spot->SetColor(1.0, 1.0, 1.0);
   material->SetShininess(300.0);
   attributes->SetBlockColor(blocks->GetBlock(2), teal);
+
+  // A block opacity reaches the lighting through VTK's opacityUniform, set per block between
+  // the draws (vtkPhongBlockMapper.h): the composite draws what a separate mapper with that
+  // opacity draws, and the floor shows through the sphere.
+  attributes->SetBlockOpacity(blocks->GetBlock(1), 0.5);
+  separate[1]->GetProperty()->SetOpacity(0.5);
+  scene.Window->Render();
+  auto translucentComposite = vtkPhongTest::Snapshot(scene.Window);
+  compositeActor->VisibilityOff();
+  for (vtkActor* actor : separate)
+  {
+    actor->VisibilityOn();
+  }
+  scene.Window->Render();
+  auto translucentSeparate = vtkPhongTest::Snapshot(scene.Window);
+  const int translucentLargest =
+    vtkPhongTest::MaxDifference(translucentComposite, translucentSeparate);
+  const int translucentDiffering =
+    vtkPhongTest::CountDifferentPixels(translucentComposite, translucentSeparate, 1);
+  const int opacityShows =
+    vtkPhongTest::CountDifferentPixels(translucentComposite, fromComposite, 8);
+  std::cout << "with a block opacity: max difference " << translucentLargest << " levels, "
+            << translucentDiffering << " pixels above 1 level; " << opacityShows
+            << " pixels changed by the opacity\n";
+  checks.Expect(translucentLargest <= 2 && translucentDiffering <= 24 && opacityShows > 500,
+    "a block opacity is drawn as a separate mapper draws that opacity (max " +
+      std::to_string(translucentLargest) + " levels, " + std::to_string(translucentDiffering) +
+      " pixels; " + std::to_string(opacityShows) + " pixels changed)");
+  for (vtkActor* actor : separate)
+  {
+    actor->VisibilityOff();
+  }
+  compositeActor->VisibilityOn();
+  attributes->SetBlockOpacity(blocks->GetBlock(1), 1.0); // Remove... does not mark a change
+  separate[1]->GetProperty()->SetOpacity(1.0);
+
   scene.Window->Render();
   checks.Expect(errors.Messages.empty(), "no errors or warnings from the composite mapper");
   return vtkPhongTest::Finish(argc, argv, scene.Window, checks.Passed);

@@ -2,7 +2,9 @@
 and where they differ, measured on the same scenes (docs/compatibility.md
 quotes this table). Scenes within VTK's defaults must match to one 8-bit
 level; each documented difference must really show (more than 8 levels
-somewhere), so the documentation cannot go stale unnoticed.
+somewhere), so the documentation cannot go stale unnoticed. Where VTK itself
+changed (cmake/vtkPhongVersions.cmake), the scene's expectation follows the
+version under test.
 
 Run alone, it prints the table:
     PYTHONPATH=<build>/lib/python3/dist-packages xvfb-run /usr/bin/python3 \\
@@ -16,7 +18,7 @@ from vtkmodules.vtkFiltersTexture import vtkTextureMapToSphere
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkRenderWindow, vtkRenderer,
                                          vtkTexture)
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper
-from vtkphong_testing import Checks, arguments, snapshot
+from vtkphong_testing import Checks, arguments, snapshot, vtk_changed
 
 arguments()
 checks = Checks()
@@ -112,7 +114,9 @@ SCENES = [
     ("renderer ambient (0.3, 0.3, 0.6)", renderer_ambient, "stock VTK ignores vtkRenderer::Ambient"),
     ("light ambient and specular colours", light_colors,
      "stock VTK lights with the diffuse colour only"),
+    # VTK 9.3 clamps R.V at 1e-5 before pow(): its lobe is 1 too, and the pictures match.
     ("shininess 0, two lights", shininess_zero,
+     None if vtk_changed("stock-shininess-zero-lobe") else
      "stock VTK's pow(0, 0) is 0 on llvmpipe where R.V <= 0; the contract's lobe is 1"),
     ("texture with a highlight", textured,
      "stock VTK multiplies the highlight by the texture"),

@@ -1,0 +1,157 @@
+/**
+ * @class   vtkPhongBlockMapper
+ * @brief   the mapper that draws a group of blocks for vtkPhongCompositePolyDataMapper
+ *
+ * vtkPhongBlockMapper<BlockMapper> is VTK's own block mapper of the composite mapper, its
+ * lighting handed to vtkPhongMapperCore exactly as vtkPhongPolyDataMapper does. BlockMapper
+ * is the class VTK draws a group of blocks with, which depends on the VTK version
+ * (vtkPhongCompatibility.h): vtkCompositeMapperHelper2 (a helper of vtkCompositePolyDataMapper2)
+ * before VTK 9.3, vtkOpenGLBatchedPolyDataMapper (the delegate of a
+ * vtkOpenGLCompositePolyDataMapperDelegator) from VTK 9.3 on. Both keep the blocks in one
+ * vertex buffer, know their composite mapper as Parent, list their blocks with
+ * GetRenderedList(), and write each block's colour and opacity overrides into VTK's own
+ * uniforms (ambientColorUniform, diffuseColorUniform, opacityUniform) between the draws, after
+ * the material uniforms set here; the lighting reads those uniforms whenever VTK's colour code
+ * assigns the colours more than once (vtkPhongShaderBuilder), so the overrides keep working.
+ *
+ * Private to the rendering module: the composite mapper is the API.
+ *
+ * @sa vtkPhongCompositePolyDataMapper vtkPhongMapperCore vtkPhongPolyDataMapper
+ */
+
+#ifndef vtkPhongBlockMapper_h
+#define vtkPhongBlockMapper_h
+
+#include "vtkActor.h"
+#include "vtkCellData.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPhongCompositePolyDataMapper.h"
+#include "vtkPhongMapperCore.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkShaderProperty.h"
+
+#include <map>
+
+template <class BlockMapper>
+class vtkPhongBlockMapper : public BlockMapper
+{
+public:
+  static vtkPhongBlockMapper* New() { VTK_STANDARD_NEW_BODY(vtkPhongBlockMapper); }
+  vtkTemplateTypeMacro(vtkPhongBlockMapper, BlockMapper);
+
+  vtkPhongMapperCore* GetCore() { return this->Core; }
+
+  void ReleaseGraphicsResources(vtkWindow* window) override
+  {
+    this->Core->ReleaseGraphicsResources();
+    this->Superclass::ReleaseGraphicsResources(window);
+  }
+
+protected:
+  vtkPhongBlockMapper() = default;
+  ~vtkPhongBlockMapper() override = default;
+
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
+  {
+    const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+
+    // As vtkPhongPolyDataMapper reads it, except that the normals of every block share
+    // the vertex buffer, so every block's normals are scanned.
+    vtkPhongShaderBuilder::PrimitiveState state;
+    state.LightComplexity = this->PrimitiveInfo[&cellBO].LastLightComplexity;
+    state.IsTriangles = cellBO.PrimitiveType == BlockMapper::PrimitiveTris ||
+      cellBO.PrimitiveType == BlockMapper::PrimitiveTriStrips;
+    state.HasPointNormals = this->VBOs->GetNumberOfComponents("normalMC") == 3;
+    state.HasCellNormals = this->HaveCellNormals;
+    for (vtkPolyData* block : this->GetRenderedList())
+    {
+      vtkDataArray* normals = state.HasPointNormals ? block->GetPointData()->GetNormals()
+                                                    : block->GetCellData()->GetNormals();
+      state.NormalsMayBeInvalid =
+        state.NormalsMayBeInvalid || this->Core->HasUnusableVectors(normals);
+    }
+    state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
+    state.HasGeometryShader = this->DrawingEdges(ren, act) || this->HaveWideLines(ren, act) ||
+      act->GetShaderProperty()->HasGeometryShaderCode();
+    state.DrawingVertices = this->DrawingVertices;
+    state.DrawingSelection = this->DrawingSelection;
+
+    if (auto* parent = vtkPhongCompositePolyDataMapper::SafeDownCast(this->Parent))
+    {
+      this->Core->Options.DebugView = parent->GetDebugView();
+      this->Core->Options.DebugLightIndex = parent->GetDebugLightIndex();
+      this->Core->Options.Specialize = parent->GetShaderSpecialization();
+    }
+    return this->Core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
+  }
+
+  void UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
+  {
+    this->Core->BeginUpdateShaders();
+    this->Superclass::UpdateShaders(cellBO, ren, act);
+    if (this->Core->EndUpdateShaders(cellBO, ren, this->Reporter()))
+    {
+      this->Superclass::UpdateShaders(cellBO, ren, act); // now planned with VTK's lighting
+    }
+  }
+
+  void BuildShaders(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
+  {
+    this->Superclass::BuildShaders(shaders, ren, act);
+    this->Core->ShadersBuilt(shaders, this->LastBoundBO);
+  }
+
+  void ReplaceShaderLight(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
+  {
+    if (!this->Core->Handles(this->LastBoundBO))
+    {
+      this->Superclass::ReplaceShaderLight(shaders, ren, act);
+      return;
+    }
+    this->Core->ReplaceShaderLight(shaders, this->LastBoundBO);
+  }
+
+  void SetLightingShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
+  {
+    if (!this->Core->Handles(&cellBO))
+    {
+      this->Superclass::SetLightingShaderParameters(cellBO, ren, act);
+      return;
+    }
+    this->Core->SetLightUniforms(cellBO, ren);
+  }
+
+  void SetPropertyShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
+  {
+    this->Superclass::SetPropertyShaderParameters(cellBO, ren, act);
+    if (this->Core->Handles(&cellBO))
+    {
+      this->Core->SetMaterialUniforms(cellBO);
+    }
+  }
+
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override
+  {
+    this->Superclass::RenderPieceFinish(ren, act);
+    this->Core->ReportProblems(this->Reporter());
+  }
+
+  // Errors name the mapper the user made, not the block mapper.
+  vtkObject* Reporter() { return this->Parent ? static_cast<vtkObject*>(this->Parent) : this; }
+
+  vtkNew<vtkPhongMapperCore> Core;
+
+private:
+  vtkPhongBlockMapper(const vtkPhongBlockMapper&) = delete;
+  void operator=(const vtkPhongBlockMapper&) = delete;
+};
+
+#endif
