@@ -301,7 +301,7 @@ out = path("error.png")
 cases = [
     ((path("nothing.off"), "-o", out), 1, "no such file"),
     ((path("sphere.xyz"), "-o", out), 1, "unknown extension"),
-    ((path("truncated.stl"), "-o", out), 1, "not an STL file"),
+    ((path("truncated.stl"), "-o", out), 1, "truncated.stl: "),
     ((good, "-o", path("image.jpg")), 2, ".png or .exr"),
     ((good, "-o", path("no-such-folder/image.png")), 1, "no directory"),
     ((good,), 2, "-o"),

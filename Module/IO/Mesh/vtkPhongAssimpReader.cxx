@@ -10,6 +10,7 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/version.h>
@@ -61,6 +62,16 @@ void GivePointCloudsFaces(aiScene& scene)
 std::string ReadScene(const std::string& path, unsigned int flags, vtkMultiBlockDataSet* output)
 {
   Assimp::Importer importer;
+  // STL's normals are per facet: they keep every vertex apart (JoinIdenticalVertices joins
+  // only vertices equal in every attribute), so the surface could only ever look faceted.
+  // Without them the vertices are shared and the mapper computes normals split at sharp
+  // edges (its feature angle), as VTK's STL reader and vtkOpenMeshNormals do.
+  if (vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path)) ==
+    ".stl")
+  {
+    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
+    flags |= aiProcess_RemoveComponent;
+  }
   const aiScene* scene = importer.ReadFile(path, 0);
   if (scene)
   {
