@@ -57,9 +57,33 @@ void GivePointCloudsFaces(aiScene& scene)
   }
 }
 
+// The importer's scene for the file, post-processed; nullptr when assimp cannot read it.
+// A scene only assimp's validation refuses (a light without a node, an empty mesh among
+// good ones: files assimp's own viewer shows) is read again without post-processing:
+// AppendBlocks checks what it uses itself. lenient tells the caller.
+const aiScene* ImportScene(
+  Assimp::Importer& importer, const std::string& path, unsigned int flags, bool& lenient)
+{
+  lenient = false;
+  const aiScene* scene = importer.ReadFile(path, 0);
+  if (scene)
+  {
+    GivePointCloudsFaces(*const_cast<aiScene*>(scene));
+    scene = importer.ApplyPostProcessing(flags);
+  }
+  const std::string why = importer.GetErrorString();
+  if (!scene && why.rfind("Validation failed", 0) == 0)
+  {
+    scene = importer.ReadFile(path, 0);
+    lenient = scene != nullptr;
+  }
+  return scene;
+}
+
 // Reads the file into output; returns why it failed, or an empty string. The file is read
 // with no post-processing first, so that point clouds can be completed before validation.
-std::string ReadScene(const std::string& path, unsigned int flags, vtkMultiBlockDataSet* output)
+std::string ReadScene(const std::string& path, unsigned int flags, vtkMultiBlockDataSet* output,
+  std::string& warning)
 {
   Assimp::Importer importer;
   // STL's normals are per facet: they keep every vertex apart (JoinIdenticalVertices joins
@@ -72,18 +96,23 @@ std::string ReadScene(const std::string& path, unsigned int flags, vtkMultiBlock
     importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
     flags |= aiProcess_RemoveComponent;
   }
-  const aiScene* scene = importer.ReadFile(path, 0);
-  if (scene)
-  {
-    GivePointCloudsFaces(*const_cast<aiScene*>(scene));
-    scene = importer.ApplyPostProcessing(flags);
-  }
+  bool lenient = false;
+  const aiScene* scene = ImportScene(importer, path, flags, lenient);
   if (!scene)
   {
     const std::string why = importer.GetErrorString();
     return why.empty() ? "assimp cannot read it." : why;
   }
-  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || scene->mNumMeshes == 0)
+  if (lenient)
+  {
+    warning = "assimp's validation refused the scene; it is read without post-processing.";
+    // Deliberately leaked: assimp's destructor is not safe on a scene its validation
+    // refused (a double free on its own OpenGEX/camera.ogex). Only such files leak.
+    importer.GetOrphanedScene();
+  }
+  // An incomplete scene (assimp's flag for files of cameras, lights or animations) is
+  // still drawn when it has meshes.
+  if (scene->mNumMeshes == 0)
   {
     return "it holds no mesh.";
   }
@@ -171,10 +200,11 @@ int vtkPhongAssimpReader::RequestData(
     return 0;
   }
   vtkNew<vtkMultiBlockDataSet> blocks;
+  std::string warning;
   try
   {
-    why = ReadScene(
-      this->FileName, PostProcessing(this->Triangulate, this->JoinIdenticalVertices), blocks);
+    why = ReadScene(this->FileName,
+      PostProcessing(this->Triangulate, this->JoinIdenticalVertices), blocks, warning);
   }
   catch (const std::exception& error)
   {
@@ -184,6 +214,10 @@ int vtkPhongAssimpReader::RequestData(
   {
     vtkErrorMacro(<< "Cannot read " << this->FileName << ": " << why);
     return 0;
+  }
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< this->FileName << ": " << warning);
   }
   output->ShallowCopy(blocks);
   return 1;

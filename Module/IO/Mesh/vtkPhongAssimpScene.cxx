@@ -246,12 +246,21 @@ struct Walk
   const std::string& Directory;
   vtkMultiBlockDataSet* Output;
   unsigned int Depth = 0;
+  unsigned long long Visits = 0;
 };
+
+// A node graph with a cycle (refused by validation, but a scene read leniently is not
+// validated) would be walked forever; a real scene has far fewer nodes than this.
+const unsigned long long MaximumVisits = 1000000;
 
 // Depth-first over the node tree, the transforms accumulated from the root. The depth is
 // bounded: a corrupt file could make the tree arbitrarily deep and the stack overflow.
 void AppendNode(Walk& walk, const aiNode& node, const aiMatrix4x4& parent)
 {
+  if (++walk.Visits > MaximumVisits)
+  {
+    return;
+  }
   const aiMatrix4x4 transform = parent * node.mTransformation;
   for (unsigned int m = 0; m < node.mNumMeshes && node.mMeshes; ++m)
   {
@@ -261,6 +270,10 @@ void AppendNode(Walk& walk, const aiNode& node, const aiMatrix4x4& parent)
       continue;
     }
     const aiMesh& mesh = *walk.Scene.mMeshes[index];
+    if (!mesh.mVertices || mesh.mNumVertices == 0)
+    {
+      continue;
+    }
     const unsigned int block = walk.Output->GetNumberOfBlocks();
     walk.Output->SetBlock(block, MakeBlock(walk.Scene, mesh, transform, walk.Directory));
     walk.Output->GetMetaData(block)->Set(
@@ -294,7 +307,7 @@ unsigned int vtkPhongAssimpScene::AppendBlocks(
   const bool unused = output->GetNumberOfBlocks() == before;
   for (unsigned int m = 0; unused && scene.mMeshes && m < scene.mNumMeshes; ++m)
   {
-    if (scene.mMeshes[m])
+    if (scene.mMeshes[m] && scene.mMeshes[m]->mVertices && scene.mMeshes[m]->mNumVertices)
     {
       const unsigned int block = output->GetNumberOfBlocks();
       output->SetBlock(block, MakeBlock(scene, *scene.mMeshes[m], aiMatrix4x4(), directory));

@@ -170,18 +170,28 @@ def load_parts(directory, warnings):
 
 def _colours_to_bytes(polydata):
     """Float RGB or RGBA scalars (in [0, 1]) become 8-bit, which the mapper shows as they
-    are; VTK would otherwise map them through a lookup table."""
+    are (VTK would map floats through a lookup table); an alpha channel that is 0
+    everywhere (AMF) is taken as unset, not as an invisible mesh, and colours that are
+    all 0 (Blender's default cube) as no colours."""
     from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
     import numpy
     for data in (polydata.GetPointData(), polydata.GetCellData()):
         scalars = data.GetScalars()
-        if (scalars is None or scalars.GetNumberOfComponents() not in (3, 4)
-                or scalars.GetDataTypeAsString() not in ("float", "double")):
+        if scalars is None or scalars.GetNumberOfComponents() not in (3, 4):
             continue
-        values = numpy.nan_to_num(vtk_to_numpy(scalars), nan=0.0, posinf=1.0, neginf=0.0)
-        converted = numpy_to_vtk(
-            numpy.ascontiguousarray(numpy.clip(values, 0.0, 1.0) * 255.0 + 0.5, numpy.uint8),
-            deep=True)
+        values = vtk_to_numpy(scalars)
+        if scalars.GetDataTypeAsString() in ("float", "double"):
+            values = numpy.nan_to_num(values, nan=0.0, posinf=1.0, neginf=0.0)
+            values = numpy.clip(values, 0.0, 1.0) * 255.0 + 0.5
+        elif scalars.GetDataTypeAsString() != "unsigned char":
+            continue
+        values = numpy.array(values, numpy.uint8)
+        if len(values) and values.max() == 0:
+            data.SetScalars(None)  # all black and transparent: colours never set (Blender)
+            continue
+        if values.shape[1] == 4 and len(values) and values[:, 3].max() == 0:
+            values[:, 3] = 255
+        converted = numpy_to_vtk(values, deep=True)
         converted.SetName(scalars.GetName() or "Colors")
         data.SetScalars(converted)
 

@@ -75,7 +75,8 @@ def apply_material(prop, material):
     from a dict of material_of. Keys the material lacks leave prop as it was; without a
     specular colour, or when it is 0, the file's shininess is not applied: assimp reports 0
     for materials that give none (an OBJ without Ns, glTF), and an exponent of 0 would
-    light the whole lit side of a surface with the highlight's colour."""
+    light the whole lit side of a surface with the highlight's colour. An opacity of 0 is
+    not applied either."""
     if not material:
         return
     colour_setters = (("ambient", prop.SetAmbientColor, prop.SetAmbient),
@@ -90,5 +91,7 @@ def apply_material(prop, material):
         prop.SetShininess(material["shininess"])
     if "emission" in material and hasattr(prop, "SetEmission"):
         prop.SetEmission([max(value, 0.0) for value in material["emission"]])
-    if "opacity" in material:
-        prop.SetOpacity(min(max(material["opacity"], 0.0), 1.0))
+    # An opacity of 0 would hide the part: exporters write it for "no transparency"
+    # (3ds Max's COLLADA), so it is not applied.
+    if material.get("opacity", 0.0) > 0.0:
+        prop.SetOpacity(min(material["opacity"], 1.0))
