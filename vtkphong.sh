@@ -13,6 +13,9 @@
 #   ./vtkphong.sh paraview build the ParaView 5.11 plugin against paraview-dev's VTK
 #                          (into ./build-paraview) and run its pvbatch / MPI / pvserver
 #                          tests; `test` runs this stage too after the VTK tests
+#   ./vtkphong.sh fuzz     vtkphong-render on all of assimp's test corpus, then mutation
+#                          fuzzing of its readers (1000 mutants per format); prints the
+#                          tables of docs/io.md
 #   ./vtkphong.sh paraview-bench
 #                          time Phong Surface against Surface in pvbatch on 1 and 2
 #                          MPI ranks (a 4M-triangle sphere; docs/paraview.md)
@@ -32,6 +35,7 @@ packages=(
   libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
   xvfb xauth libgl1-mesa-dri
   libcgal-demo universal-ctags
+  libassimp-dev assimp-testmodels assimp-utils
 )
 # The ParaView stage. python3-paraview conflicts with python3-vtk9 and is never
 # installed: its .deb is unpacked into the ParaView build tree instead.
@@ -140,6 +144,16 @@ case "$command" in
     PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
       "$root/Testing/Benchmarks/vtkPhongTradeStudy.py" --out "$root/docs/results"
     ;;
+  fuzz)
+    install_packages
+    build_project
+    export PYTHONPATH="$build/lib/python3/dist-packages"
+    mkdir -p "$build/Testing/Temporary"
+    with_display /usr/bin/python3 "$root/Testing/Python/TestPhongAssimpCorpus.py" \
+      "$build/bin/vtkphong-render" -T "$build/Testing/Temporary" || true
+    with_display /usr/bin/python3 "$root/Testing/Python/TestPhongFuzzReaders.py" \
+      "$build/bin/vtkphong-render" -T "$build/Testing/Temporary" --count 1000 --cli-sample 50
+    ;;
   extremes)
     install_packages
     build_project
@@ -148,7 +162,7 @@ case "$command" in
       -T "$build/Testing/Temporary"
     ;;
   *)
-    sed -n '2,22p' "$0" >&2
+    sed -n '2,24p' "$0" >&2
     exit 2
     ;;
 esac
