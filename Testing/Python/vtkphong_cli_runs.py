@@ -5,6 +5,8 @@ An outcome is one of:
   rendered     status 0 and something other than the background in the picture
   blank        status 0 but only background (a failure where a mesh was expected)
   error        status 1 or 2 and exactly one line "vtkphong-render: error: ..." on stderr
+  contained    such an error line saying the reader crashed or did not finish: the reader's
+               child process died or was stopped, the command did not
   crash        killed by a signal, another status, a traceback, or not one error line
   hang         still running after the time limit
 """
@@ -17,7 +19,8 @@ import subprocess
 import numpy
 
 BACKGROUND = (0.12, 0.12, 0.14)
-OUTCOMES = ("rendered", "blank", "error", "crash", "hang")
+OUTCOMES = ("rendered", "blank", "error", "contained", "crash", "hang")
+CONTAINED = ("the reader crashed", "the reader did not finish")
 
 
 def run_cli(cli, mesh, image, timeout, read_limits=(60, 2048)):
@@ -37,7 +40,8 @@ def run_cli(cli, mesh, image, timeout, read_limits=(60, 2048)):
         return ("rendered", "") if covered_pixels(image) > 0 else ("blank", "")
     if (result.returncode in (1, 2) and len(lines) == 1
             and lines[0].startswith("vtkphong-render: error: ") and "Traceback" not in stderr):
-        return "error", lines[0][len("vtkphong-render: error: "):]
+        detail = lines[0][len("vtkphong-render: error: "):]
+        return ("contained" if any(words in detail for words in CONTAINED) else "error"), detail
     return "crash", "status %d: %s" % (result.returncode, stderr.strip()[-300:])
 
 
