@@ -103,10 +103,23 @@ def _check_material_library(path, warnings):
 
 def reader_limits():
     """(timeout in seconds, address-space limit in bytes) for the child."""
-    timeout = float(os.environ.get(TIMEOUT_VARIABLE, "300"))
     default_mb = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // (2 << 20)
-    memory_mb = int(os.environ.get(MEMORY_VARIABLE, str(max(default_mb, 2048))))
+    timeout = _positive_number(TIMEOUT_VARIABLE, 300.0)
+    memory_mb = int(_positive_number(MEMORY_VARIABLE, max(default_mb, 2048)))
     return timeout, memory_mb << 20
+
+
+def _positive_number(variable, default):
+    text = os.environ.get(variable)
+    if text is None:
+        return default
+    try:
+        value = float(text)
+    except ValueError:
+        value = -1.0
+    if not value > 0.0:
+        raise RenderError("%s must be a positive number, not %r" % (variable, text))
+    return value
 
 
 def run_reader(path, directory, limits=None):
