@@ -288,6 +288,9 @@ def main():
     parser.add_argument("--models", default="/usr/share/assimp/models")
     parser.add_argument("--cli-sample", type=int, default=12)
     parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--formats", nargs="*",
+                        help="run only these formats' mutants (all are still made, so each"
+                             " format's mutants do not depend on the others run)")
     args = parser.parse_args()
     import vtkphong  # noqa: F401 -- loaded once, before the forks
     from vtkmodules.vtkCommonCore import vtkObject
@@ -298,6 +301,8 @@ def main():
     started = time.monotonic()
     seeds = seed_files(args.models, work)
     mutants = make_mutants(seeds, args.count, args.seed, os.path.join(work, "mutants"))
+    if args.formats:
+        mutants = [mutant for mutant in mutants if mutant[0] in args.formats]
     # Two at a time (the forks are made from two threads; each child is single-threaded).
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         outcomes = list(pool.map(lambda mutant: category(*fuzz_one(mutant[2], work)), mutants))

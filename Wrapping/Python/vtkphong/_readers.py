@@ -32,6 +32,8 @@ def read_parts(path):
     extension = os.path.splitext(path)[1].lower()
     if extension in VTK_EXTENSIONS:
         return [(_read_vtk(path, extension), None, None)]
+    if extension == ".ply":
+        check_ply_header(path)
     if extension == ".off":
         from vtkphong import vtkPhongOFFReader
         reader = vtkPhongOFFReader()
@@ -39,6 +41,44 @@ def read_parts(path):
         reader.Update()
         return [(reader.GetOutput(), None, None)]
     return _read_assimp(path)
+
+
+# Bytes of each PLY scalar type, for the smallest size a binary element can take.
+PLY_SIZES = {"char": 1, "uchar": 1, "int8": 1, "uint8": 1, "short": 2, "ushort": 2,
+             "int16": 2, "uint16": 2, "int": 4, "uint": 4, "int32": 4, "uint32": 4,
+             "float": 4, "float32": 4, "double": 8, "float64": 8}
+
+
+def check_ply_header(path):
+    """Refuse a PLY file whose header does not end (assimp 5.2's PLY importer loops forever
+    on a truncated header) or announces more elements than the file's size can hold."""
+    with open(path, "rb") as stream:
+        head = stream.read(65536)
+    end = head.find(b"end_header")
+    if not head.startswith(b"ply") or end < 0:
+        raise ReadFailure("not a PLY file, or its header does not end in its first 64 KiB")
+    header = head[:end].decode("ascii", "replace").splitlines()
+    needed = _ply_smallest_size(header, b"binary" in head[:end])
+    if needed > os.path.getsize(path) - end:
+        raise ReadFailure("its header announces elements needing at least %d bytes; the file"
+                          " has %d" % (needed, os.path.getsize(path)))
+
+
+def _ply_smallest_size(header, binary):
+    """The fewest bytes the elements of a PLY header can take: per element, the sum of its
+    scalar sizes (a list: its count's) in binary, a digit and a separator in ASCII."""
+    total, count = 0, 0
+    for line in header:
+        words = line.split()
+        if len(words) == 3 and words[0] == "element":
+            if not words[2].isdigit():
+                raise ReadFailure("its header's element %r has no count" % words[1])
+            count = int(words[2])
+            total += 0 if binary else 2 * count
+        elif binary and len(words) >= 3 and words[0] == "property":
+            scalar = words[2] if words[1] == "list" else words[1]
+            total += count * PLY_SIZES.get(scalar, 1)
+    return total
 
 
 def _read_vtk(path, extension):
