@@ -125,7 +125,8 @@ void SetCells(const aiMesh& mesh, vtkPolyData* polydata)
 {
   vtkNew<vtkCellArray> verts, lines, polys;
   std::vector<vtkIdType> ids;
-  for (unsigned int f = 0; f < mesh.mNumFaces; ++f)
+  // A scene read without validation may count faces it does not hold.
+  for (unsigned int f = 0; mesh.mFaces && f < mesh.mNumFaces; ++f)
   {
     const aiFace& face = mesh.mFaces[f];
     if (face.mNumIndices == 0 || !face.mIndices)
