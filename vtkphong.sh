@@ -23,6 +23,9 @@
 #                          build with AddressSanitizer + UndefinedBehaviorSanitizer
 #                          (into ./build-asan) and run the C++ tests; any report in
 #                          the project's own code fails (docs/sanitizers.md)
+#   ./vtkphong.sh fuzz     vtkphong-render on all of assimp's test corpus, then mutation
+#                          fuzzing of its readers (1000 mutants per format); prints the
+#                          tables of docs/io.md
 #   ./vtkphong.sh paraview-bench
 #                          time Phong Surface against Surface in pvbatch on 1 and 2
 #                          MPI ranks (a 4M-triangle sphere; docs/paraview.md)
@@ -49,6 +52,7 @@ packages=(
   libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
   xvfb xauth libgl1-mesa-dri
   libcgal-demo universal-ctags
+  libassimp-dev assimp-testmodels assimp-utils
 )
 paraview_packages=(paraview paraview-dev openmpi-bin)
 release="$(. /etc/os-release && echo "${VERSION_CODENAME:-}")"
@@ -271,6 +275,16 @@ case "$command" in
     build_sanitized
     run_sanitized_tests
     ;;
+  fuzz)
+    install_packages
+    build_project
+    export PYTHONPATH="$build/lib/python3/dist-packages"
+    mkdir -p "$build/Testing/Temporary"
+    with_display /usr/bin/python3 "$root/Testing/Python/TestPhongAssimpCorpus.py" \
+      "$build/bin/vtkphong-render" -T "$build/Testing/Temporary" || true
+    with_display /usr/bin/python3 "$root/Testing/Python/TestPhongFuzzReaders.py" \
+      "$build/bin/vtkphong-render" -T "$build/Testing/Temporary" --count 1000 --cli-sample 50
+    ;;
   extremes)
     install_packages
     build_project
@@ -279,7 +293,7 @@ case "$command" in
       -T "$build/Testing/Temporary"
     ;;
   *)
-    sed -n '2,27p' "$0" >&2
+    sed -n '2,34p' "$0" >&2
     exit 2
     ;;
 esac

@@ -1,5 +1,6 @@
 # Third-party libraries beside VTK, all from Debian 12's packages:
-#   libopenmesh-dev (OpenMesh 9.0), libglm-dev, libopenimageio-dev.
+#   libopenmesh-dev (OpenMesh 9.0), libglm-dev, libopenimageio-dev, libassimp-dev
+#   (assimp 5.2 on Debian 12, 5.4 on Debian 13).
 
 find_package(OpenMesh REQUIRED)
 if (NOT TARGET OpenMeshCore)
@@ -27,4 +28,14 @@ if (TARGET OpenImageIO::OpenImageIO AND NOT EXISTS "/usr/include/opencv4")
       set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${_vtkphong_property} "${_vtkphong_dirs}")
     endif ()
   endforeach ()
+endif ()
+
+# assimp, for vtkPhongAssimpReader (IO/Mesh, privately): its CMake package where it has
+# one (Debian's has, target assimp::assimp), else pkg-config.
+find_package(assimp QUIET)
+if (NOT TARGET assimp::assimp)
+  find_package(PkgConfig REQUIRED)
+  pkg_check_modules(vtkphong_assimp REQUIRED IMPORTED_TARGET assimp)
+  add_library(assimp::assimp INTERFACE IMPORTED)
+  target_link_libraries(assimp::assimp INTERFACE PkgConfig::vtkphong_assimp)
 endif ()

@@ -296,12 +296,22 @@ with open(path("missing-mtl.obj"), "w") as stream:
 with open(path("truncated.stl"), "wb") as stream:
     stream.write(b"\0" * 80 + struct.pack("<I", 1000) + b"\0" * 500)
 
+# What fuzzing found in the readers the command used before: coordinates that overflow the
+# camera's arithmetic, cells naming points that do not exist (VTK's bounds crashed on them).
+with open(path("huge.off"), "w") as stream:
+    stream.write("OFF\n3 1 0\n0 0 0\n1e308 0 0\n0 1e308 0\n3 0 1 2\n")
+with open(path("bad-cell.vtk"), "w") as stream:
+    stream.write("# vtk DataFile Version 3.0\nbad\nASCII\nDATASET POLYDATA\n"
+                 "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 7000000\n")
+
 good = path("sphere.off")
 out = path("error.png")
 cases = [
     ((path("nothing.off"), "-o", out), 1, "no such file"),
     ((path("sphere.xyz"), "-o", out), 1, "unknown extension"),
-    ((path("truncated.stl"), "-o", out), 1, "not an STL file"),
+    ((path("truncated.stl"), "-o", out), 1, "truncated.stl: "),
+    ((path("huge.off"), "-o", out), 1, "beyond 1e+30"),
+    ((path("bad-cell.vtk"), "-o", out), 1, "points that do not exist"),
     ((good, "-o", path("image.jpg")), 2, ".png or .exr"),
     ((good, "-o", path("no-such-folder/image.png")), 1, "no directory"),
     ((good,), 2, "-o"),
@@ -341,4 +351,12 @@ checks.expect(result.returncode == 0 and result.stderr.startswith("vtkphong-rend
               and "nowhere.mtl" in result.stderr and result.stderr.count("\n") == 1,
               "a missing .mtl: one warning, the default material (%r)" % result.stderr)
 
+# A material name that is not UTF-8 (the command used to fail with a TypeError on it).
+with open(path("latin1.mtl"), "wb") as stream:
+    stream.write(b"newmtl M\xe9tal\nKd 0.9 0.1 0.1\nKs 0.5 0.5 0.5\nNs 200\n")
+with open(path("latin1.obj"), "wb") as stream:
+    stream.write(b"mtllib latin1.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl M\xe9tal\nf 1 2 3\n")
+result = run(path("latin1.obj"), "-o", path("latin1.png"), "--quiet")
+checks.expect(result.returncode == 0 and result.stderr == "",
+              "a material name in Latin-1 renders (%r)" % result.stderr)
 checks.exit()

@@ -185,10 +185,27 @@ std::string ReadCounts(OFFLines& lines, OFFHeader& header)
   return std::string();
 }
 
-std::string ReadHeader(OFFLines& lines, OFFHeader& header)
+// The counts are checked against the file's size before anything is allocated from them:
+// a vertex takes at least 6 bytes ("0 0 0\n"), a face at least 2 ("0\n"), so a header
+// claiming more than the file can hold is refused instead of allocating from it.
+std::string CheckCountsAgainstSize(const OFFHeader& header, long long fileSize)
+{
+  const long long limit = fileSize / 2;
+  if (header.NumberOfVertices > limit / 3 || header.NumberOfFaces > limit ||
+    6 * header.NumberOfVertices + 2 * header.NumberOfFaces > fileSize)
+  {
+    return "the header announces " + std::to_string(header.NumberOfVertices) + " vertices and " +
+      std::to_string(header.NumberOfFaces) + " faces, more than the file's " +
+      std::to_string(fileSize) + " bytes can hold.";
+  }
+  return std::string();
+}
+
+std::string ReadHeader(OFFLines& lines, OFFHeader& header, long long fileSize)
 {
   std::string why = ReadKeyword(lines, header);
-  return why.empty() ? ReadCounts(lines, header) : why;
+  why = why.empty() ? ReadCounts(lines, header) : why;
+  return why.empty() ? CheckCountsAgainstSize(header, fileSize) : why;
 }
 
 void AllocateVertexArrays(const OFFHeader& header, OFFMesh& mesh)
@@ -398,16 +415,18 @@ int vtkPhongOFFReader::RequestData(
     vtkErrorMacro("No FileName was set.");
     return 0;
   }
-  std::ifstream input(this->FileName);
+  std::ifstream input(this->FileName, std::ios::binary | std::ios::ate);
   if (!input)
   {
     vtkErrorMacro("Cannot open " << this->FileName << ".");
     return 0;
   }
+  const long long fileSize = static_cast<long long>(input.tellg());
+  input.seekg(0);
   OFFLines lines(input);
   OFFHeader header;
   OFFMesh mesh;
-  std::string why = ReadHeader(lines, header);
+  std::string why = ReadHeader(lines, header, fileSize);
   if (why.empty())
   {
     why = ReadVertices(lines, header, mesh, this);

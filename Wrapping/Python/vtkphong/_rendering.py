@@ -101,10 +101,24 @@ def _actor_for(part, settings, progress):
     mapper = _mapper_for(part, settings, progress)
     actor = vtkActor()
     actor.SetMapper(mapper)
-    actor.SetProperty(_property_for(part, settings))
-    if part.texture is not None:
+    prop = _property_for(part, settings)
+    _size_points_and_lines(prop, part.polydata, settings["size"])
+    actor.SetProperty(prop)
+    if part.texture is not None and settings["material"]["color"] is None:
         actor.SetTexture(part.texture)
     return actor
+
+
+def _size_points_and_lines(prop, polydata, size):
+    """Points and lines are drawn a few pixels wide, in proportion to the image, so a point
+    cloud or a polyline shows at any size; a part without surfaces and without normals is
+    drawn unlit in its colour (a point or a line has no surface to light)."""
+    scale = max(size) / 1024.0
+    prop.SetPointSize(max(3.0, 5.0 * scale))
+    prop.SetLineWidth(max(1.0, 2.0 * scale))
+    surfaces = polydata.GetNumberOfPolys() + polydata.GetNumberOfStrips()
+    if surfaces == 0 and polydata.GetPointData().GetNormals() is None:
+        prop.LightingOff()
 
 
 def _mapper_for(part, settings, progress):
@@ -145,51 +159,37 @@ def _has_colors(polydata):
 # --- the material ----------------------------------------------------------------
 
 def _property_for(part, settings):
-    """The part's material: the .mtl file's values for an OBJ part, else the defaults;
-    then whatever the scene file or the flags set."""
+    """The part's material: the defaults, then the file's material (vtkphong.materials),
+    then what the scene file or the flags set."""
     from vtkphong import vtkPhongProperty
+    from vtkphong.materials import apply_material
     lobes = {"phong": vtkPhongProperty.Phong, "blinn-phong": vtkPhongProperty.BlinnPhong,
              "normalized-phong": vtkPhongProperty.NormalizedPhong,
              "normalized-blinn-phong": vtkPhongProperty.NormalizedBlinnPhong}
     material = settings["material"]
-    # An .mtl material gives way only to what the user chose; the defaults set it all.
-    chosen = settings["material_set"] if part.material is not None else set(material)
     prop = vtkPhongProperty()
-    if part.material is not None:
-        _copy_file_material(prop, part, material["shininess"])
-    _apply_material(prop, part, material, chosen)
-    prop.SetEmission(material["emission"])
+    _apply_settings(prop, material, set(material))
+    apply_material(prop, part.material)
+    _apply_settings(prop, material, settings["material_set"])
     prop.SetLightingModel(lobes[settings["lobe"]])
     _set_interpolation(prop, settings["interpolation"])
     return prop
 
 
-def _copy_file_material(prop, part, default_shininess):
-    source = part.material
-    prop.SetAmbientColor(source.GetAmbientColor())
-    prop.SetDiffuseColor(source.GetDiffuseColor())
-    prop.SetSpecularColor(source.GetSpecularColor())
-    prop.SetAmbient(source.GetAmbient())
-    prop.SetDiffuse(source.GetDiffuse())
-    prop.SetSpecular(source.GetSpecular())
-    prop.SetOpacity(source.GetOpacity())
-    prop.SetLighting(source.GetLighting())
-    # The file's own Ns, unclamped (the importer's property holds a clamped one).
-    prop.SetShininess(part.shininess if part.shininess is not None else default_shininess)
-
-
-def _apply_material(prop, part, material, chosen):
-    """Only the chosen keys: an OBJ part keeps its .mtl values for the others."""
+def _apply_settings(prop, material, chosen):
+    """The chosen keys of the settings' material."""
     if "color" in chosen:
-        # vtkProperty.SetColor also sets the specular colour; highlights stay as chosen.
-        prop.SetColor(material["color"] if material["color"] is not None else [0.8, 0.8, 0.8])
-        if part.material is not None:
-            prop.SetSpecularColor(part.material.GetSpecularColor())
+        # vtkProperty.SetColor sets the ambient, diffuse and specular colours; only the
+        # first two are the surface's colour.
+        color = material["color"] if material["color"] is not None else [0.8, 0.8, 0.8]
+        prop.SetAmbientColor(color)
+        prop.SetDiffuseColor(color)
     if "specular_color" in chosen:
         prop.SetSpecularColor(material["specular_color"])
     for key, setter in (("ambient", prop.SetAmbient), ("diffuse", prop.SetDiffuse),
-                        ("specular", prop.SetSpecular), ("shininess", prop.SetShininess)):
-        if key in chosen:
+                        ("specular", prop.SetSpecular), ("shininess", prop.SetShininess),
+                        ("emission", prop.SetEmission)):
+        if key in chosen and material.get(key) is not None:
             setter(material[key])
 
 

@@ -72,11 +72,20 @@ scene file (--scene FILE.json), every key optional, flags win over it:
   "camera" (VTK camera-light coordinates: the camera at (0, 0, 1), the focal
   point at the origin) or "headlight" (at the camera; no position).
 
-materials:
-  An OBJ's .mtl gives each part its Kd, Ka, Ks colours and its Ns shininess
-  (used as is with the default Blinn-Phong lobe). Material flags override the
-  file. Meshes with 8-bit vertex or cell colours (PLY, OFF, VTK) keep them
-  unless --color is given.
+materials and colours:
+  Files with materials (OBJ's .mtl, glTF, FBX, COLLADA, 3DS...) give each part
+  its Ka, Kd, Ks colours, Ke emission, opacity, diffuse texture and Ns
+  shininess (unclamped, used as is with the default Blinn-Phong lobe).
+  Material flags override the file. Vertex and face colours (8-bit or float)
+  are shown unless --color is given. Point clouds and lines are drawn as
+  points and lines a few pixels wide, unlit when they have no normals.
+
+robustness:
+  The file is read in a child process with a limit on its address space
+  (VTKPHONG_READ_MEMORY_MB, default half the RAM) and a timeout
+  (VTKPHONG_READ_TIMEOUT, default 300 s); cells naming points that do not
+  exist, coordinates that are not finite or beyond 1e30 are refused. A file
+  that cannot be read is one line on stderr and status 1, never a crash.
 
 exit status: 0 on success, 1 when the mesh cannot be read or the image cannot
 be made or written, 2 for bad options or a bad scene file. Errors are one line

@@ -95,6 +95,10 @@ void CheckBrokenFiles(const std::string& directory)
     { "truncated.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n" },
     { "bad-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1000\n" },
     { "negative-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n" },
+    // assimp's invalid/OutOfMemory.off: counts no file of this size can hold, refused
+    // before anything is allocated from them (it used to throw std::bad_alloc).
+    { "huge-counts.off", "OFF\n3535352353586 0\n-0.5 -0.5 0.5\n0.5 -0.5 0.5\n" },
+    { "too-many-faces.off", "OFF\n3 400000000000 0\n0 0 0\n1 0 0\n0 1 0\n" },
   };
   for (const auto& file : broken)
   {

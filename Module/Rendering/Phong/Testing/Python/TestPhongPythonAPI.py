@@ -9,7 +9,7 @@ from vtkphong_testing import Checks
 checks = Checks()
 
 for name in ("vtkPhongPolyDataMapper", "vtkPhongCompositePolyDataMapper", "vtkPhongProperty",
-             "vtkPhongOFFReader",
+             "vtkPhongOFFReader", "vtkPhongAssimpReader",
              "vtkOpenMeshNormals", "vtkPhongFloatRenderPass", "vtkPhongReference",
              "vtkPhongImageComparison", "vtkPhongImageIO"):
     cls = getattr(vtkphong, name, None)
@@ -100,4 +100,46 @@ checks.expect(rgb == [0.5, 0.25, 0.125], "ShadePoint: ka*Ca*Ia without lights, g
 comparison = vtkphong.vtkPhongImageComparison()
 checks.expect(abs(comparison.GetThreshold() - 1.0 / 255.0) < 1e-12, "threshold: one level")
 checks.expect(hasattr(vtkphong.vtkPhongImageIO(), "WriteImage"), "vtkPhongImageIO.WriteImage")
+
+# The assimp reader's statics and vtkphong.materials: field data onto a vtkPhongProperty.
+extensions = vtkphong.vtkPhongAssimpReader.GetSupportedExtensions()
+checks.expect("*.obj" in extensions and "*.gltf" in extensions, "assimp reads OBJ and glTF")
+checks.expect(vtkphong.vtkPhongAssimpReader().GetMaxFileSize() == 1 << 30, "1 GiB size limit")
+
+
+def material_block(name, arrays):
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    block = vtkPolyData()
+    names = vtkStringArray()
+    names.SetName("MaterialName")
+    names.InsertNextValue(name)
+    block.GetFieldData().AddArray(names)
+    for array_name, values in arrays.items():
+        array = vtkDoubleArray()
+        array.SetName(array_name)
+        array.SetNumberOfComponents(len(values))
+        array.InsertNextTuple(values)
+        block.GetFieldData().AddArray(array)
+    return block
+
+
+from vtkphong.materials import apply_material, material_of  # noqa: E402
+prop = vtkphong.vtkPhongProperty()
+apply_material(prop, material_of(material_block("steel", {
+    "MaterialDiffuse": (0.5, 0.25, 0.125), "MaterialSpecular": (0.9, 0.9, 0.9),
+    "MaterialShininess": (3000.0,), "MaterialEmission": (0.1, 0.0, 0.0),
+    "MaterialOpacity": (0.5,)})))
+checks.expect(list(prop.GetDiffuseColor()) == [0.5, 0.25, 0.125] and prop.GetDiffuse() == 1.0,
+              "Kd as the diffuse colour, coefficient 1")
+checks.expect(prop.GetShininess() == 3000.0, "Ns unclamped: %g" % prop.GetShininess())
+checks.expect(list(prop.GetEmission()) == [0.1, 0.0, 0.0] and prop.GetOpacity() == 0.5,
+              "Ke as the emission, d as the opacity")
+untouched = vtkphong.vtkPhongProperty()
+apply_material(untouched, material_of(material_block("DefaultMaterial", {
+    "MaterialDiffuse": (0.2, 0.3, 0.4), "MaterialSpecular": (1.0, 1.0, 1.0),
+    "MaterialShininess": (7.0,)})))
+checks.expect(untouched.GetShininess() == vtkphong.vtkPhongProperty().GetShininess() and
+              list(untouched.GetDiffuseColor()) == [1.0, 1.0, 1.0],
+              "assimp's made-up DefaultMaterial is not applied")
 checks.exit()
