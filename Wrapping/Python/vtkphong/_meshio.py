@@ -227,39 +227,49 @@ def _load_texture(directory, name):
 def check_polydata(path, polydata):
     """RenderError unless every cell names existing points, every coordinate is finite and
     at most MAX_COORDINATE, and every point (cell) array has a tuple per point (cell)."""
+    problem = polydata_problem(polydata)
+    if problem:
+        raise RenderError("cannot read %s: %s" % (path, problem))
+
+
+def polydata_problem(polydata):
+    """What check_polydata refuses in the polydata, or None. The reading child asks too, before
+    VTK's own writer touches the cells (VTK 9.3's legacy reader output crashed it)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     import numpy
     count = polydata.GetNumberOfPoints()
     if count:
         coordinates = vtk_to_numpy(polydata.GetPoints().GetData())
         if not numpy.all(numpy.isfinite(coordinates)):
-            raise RenderError("cannot read %s: it has coordinates that are not finite" % path)
+            return "it has coordinates that are not finite"
         if numpy.abs(coordinates).max() > MAX_COORDINATE:
-            raise RenderError("cannot read %s: it has coordinates beyond %g"
-                              % (path, MAX_COORDINATE))
+            return "it has coordinates beyond %g" % MAX_COORDINATE
     for kind in ("Verts", "Lines", "Polys", "Strips"):
-        _check_cells(path, getattr(polydata, "Get" + kind)(), count, kind.lower())
-    _check_arrays(path, polydata.GetPointData(), count, "points")
-    _check_arrays(path, polydata.GetCellData(), polydata.GetNumberOfCells(), "cells")
+        problem = _cells_problem(getattr(polydata, "Get" + kind)(), count, kind.lower())
+        if problem:
+            return problem
+    return (_arrays_problem(polydata.GetPointData(), count, "points") or
+            _arrays_problem(polydata.GetCellData(), polydata.GetNumberOfCells(), "cells"))
 
 
-def _check_cells(path, cells, count, kind):
+def _cells_problem(cells, count, kind):
     from vtkmodules.util.numpy_support import vtk_to_numpy
     offsets = vtk_to_numpy(cells.GetOffsetsArray())
     connectivity = vtk_to_numpy(cells.GetConnectivityArray())
     if len(offsets) == 0 and len(connectivity) == 0:
-        return
+        return None
     if (len(offsets) == 0 or offsets[0] != 0 or offsets[-1] != len(connectivity)
             or (len(offsets) > 1 and (offsets[1:] < offsets[:-1]).any())):
-        raise RenderError("cannot read %s: its %s are malformed" % (path, kind))
+        return "its %s are malformed" % kind
     if len(connectivity) and (connectivity.min() < 0 or connectivity.max() >= count):
-        raise RenderError("cannot read %s: its %s name points that do not exist (%d points)"
-                          % (path, kind, count))
+        return "its %s name points that do not exist (%d points)" % (kind, count)
+    return None
 
 
-def _check_arrays(path, data, count, what):
+def _arrays_problem(data, count, what):
     for index in range(data.GetNumberOfArrays()):
         array = data.GetAbstractArray(index)
         if array is not None and array.GetNumberOfTuples() != count:
-            raise RenderError("cannot read %s: its array %r has %d values for %d %s"
-                              % (path, array.GetName(), array.GetNumberOfTuples(), count, what))
+            return "its array %r has %d values for %d %s" % (
+                array.GetName(), array.GetNumberOfTuples(), count, what)
+    return None

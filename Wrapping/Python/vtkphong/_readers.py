@@ -129,9 +129,13 @@ def _read_assimp(path):
 def write_parts(parts, directory):
     """part<N>.vtp (+ texture<N>.vti) per non-empty part, and parts.json listing them."""
     listing = []
+    from vtkphong._meshio import polydata_problem
     for polydata, material, texture in parts:
         if polydata.GetNumberOfCells() == 0:
             continue
+        problem = polydata_problem(polydata)
+        if problem:
+            raise ReadFailure(problem)
         number = len(listing)
         entry = {"file": "part%d.vtp" % number, "material": material, "texture": None}
         _write_polydata(polydata, os.path.join(directory, entry["file"]))
