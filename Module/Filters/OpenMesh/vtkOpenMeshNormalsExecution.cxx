@@ -560,8 +560,9 @@ vtkSmartPointer<vtkCellArray> vtkOpenMeshNormalsExecution::NewOutputPolys() cons
   polyOffsets->SetNumberOfTuples(numberOfPolys + this->NumberOfStripFaces + 1);
   vtkIdType* offsets = polyOffsets->GetPointer(0);
   offsets[0] = 0;
-  std::vector<const vtkIdType*> degeneratePoints(numberOfPolys, nullptr);
-  this->CountPolygonSizes(offsets, degeneratePoints);
+  std::vector<vtkIdType> degenerateIds;
+  std::vector<vtkIdType> degenerateFirst(numberOfPolys, 0);
+  this->CountPolygonSizes(offsets, degenerateIds, degenerateFirst);
   for (vtkIdType i = 0; i < this->NumberOfStripFaces; ++i)
   {
     const vtkIdType f = topology.StripFaces[i];
@@ -583,8 +584,8 @@ vtkSmartPointer<vtkCellArray> vtkOpenMeshNormalsExecution::NewOutputPolys() cons
         }
         else
         {
-          std::copy(degeneratePoints[poly],
-            degeneratePoints[poly] + (offsets[poly + 1] - offsets[poly]), ids + offsets[poly]);
+          const vtkIdType* original = degenerateIds.data() + degenerateFirst[poly];
+          std::copy(original, original + (offsets[poly + 1] - offsets[poly]), ids + offsets[poly]);
         }
       }
     });
@@ -603,9 +604,11 @@ vtkSmartPointer<vtkCellArray> vtkOpenMeshNormalsExecution::NewOutputPolys() cons
 
 //------------------------------------------------------------------------------
 // The offsets of the output polygons: a face's size, or a degenerate
-// polygon's original size (and where its original points are).
-void vtkOpenMeshNormalsExecution::CountPolygonSizes(
-  vtkIdType* offsets, std::vector<const vtkIdType*>& degeneratePoints) const
+// polygon's original size. A degenerate polygon's original points are copied to
+// degenerateIds from degenerateFirst[poly] on: the iterator's cell pointer is into its own
+// scratch list for cell arrays of 32-bit ids, overwritten by the next cell.
+void vtkOpenMeshNormalsExecution::CountPolygonSizes(vtkIdType* offsets,
+  std::vector<vtkIdType>& degenerateIds, std::vector<vtkIdType>& degenerateFirst) const
 {
   const Buffer<Index>& polyFace = this->Topology.PolyFace;
   const FaceList& faces = this->Topology.Faces;
@@ -633,7 +636,10 @@ void vtkOpenMeshNormalsExecution::CountPolygonSizes(
     }
     else
     {
-      iterator->GetCurrentCell(size, degeneratePoints[poly]);
+      const vtkIdType* points;
+      iterator->GetCurrentCell(size, points);
+      degenerateFirst[poly] = static_cast<vtkIdType>(degenerateIds.size());
+      degenerateIds.insert(degenerateIds.end(), points, points + size);
     }
     offsets[poly + 1] = offsets[poly] + size;
   }

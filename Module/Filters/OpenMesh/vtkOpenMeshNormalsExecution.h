@@ -157,7 +157,8 @@ private:
   void StoreWedgeNormalsOf(Index vertex, const Contribution& contribution, float* normals);
   void AssignWedgeCorners(Index vertex, Index runStart, Index runEnd, Index id);
   vtkSmartPointer<vtkCellArray> NewOutputPolys() const;
-  void CountPolygonSizes(vtkIdType* offsets, std::vector<const vtkIdType*>& degenerate) const;
+  void CountPolygonSizes(vtkIdType* offsets, std::vector<vtkIdType>& degenerateIds,
+    std::vector<vtkIdType>& degenerateFirst) const;
   void WriteFace(vtkIdType face, vtkIdType* out) const;
   void WriteSplitPoints();
   void CopySplitPointData(vtkIdList* sources, vtkIdList* destinations);

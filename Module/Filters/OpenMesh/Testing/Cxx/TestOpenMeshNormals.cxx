@@ -13,6 +13,7 @@
 
 #include "vtkPhongTestUtilities.h"
 
+#include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkIdTypeArray.h"
@@ -532,6 +533,47 @@ int TestOpenMeshNormals(int argc, char* argv[])
     aborted->AddObserver(vtkCommand::ProgressEvent, abort);
     aborted->Update();
     checks.Expect(aborted->GetOutput()->GetNumberOfPoints() == 0, "abort gives an empty output");
+  }
+
+  { // Degenerate polygons come out as they came in, also from cell arrays of 32-bit ids
+    // (whose iterator hands out a scratch copy that the next cell overwrites).
+    for (const bool use32 : { false, true })
+    {
+      vtkNew<vtkPoints> points;
+      for (int i = 0; i < 5; ++i)
+      {
+        points->InsertNextPoint(i % 2, i / 2, 0.0);
+      }
+      vtkNew<vtkCellArray> polys;
+      if (use32)
+      {
+        polys->Use32BitStorage();
+      }
+      const std::vector<std::vector<vtkIdType>> cells = { { 0, 1, 2 }, { 3, 3, 4 }, { 1, 3, 2 },
+        { 4, 4, 0 } };
+      for (const auto& cell : cells)
+      {
+        polys->InsertNextCell(static_cast<vtkIdType>(cell.size()), cell.data());
+      }
+      vtkNew<vtkPolyData> mesh;
+      mesh->SetPoints(points);
+      mesh->SetPolys(polys);
+      vtkNew<vtkOpenMeshNormals> normals;
+      normals->SetInputData(mesh);
+      normals->SplittingOff();
+      normals->Update();
+      std::vector<std::vector<vtkIdType>> out;
+      auto iterator = vtk::TakeSmartPointer(normals->GetOutput()->GetPolys()->NewIterator());
+      for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+      {
+        vtkIdType size;
+        const vtkIdType* ids;
+        iterator->GetCurrentCell(size, ids);
+        out.emplace_back(ids, ids + size);
+      }
+      checks.Expect(out == cells,
+        std::string(use32 ? "32" : "64") + "-bit ids: degenerate polygons keep their points");
+    }
   }
 
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
