@@ -3,6 +3,7 @@
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
 
+#include "vtkPhongClampedSetter.h"
 #include "vtkPhongImageBuffers.h"
 
 #include <OpenImageIO/imagebufalgo.h>
@@ -288,6 +289,26 @@ bool IsEXRName(const std::string& name)
 
 //------------------------------------------------------------------------------
 vtkPhongImageComparison::vtkPhongImageComparison() = default;
+
+//------------------------------------------------------------------------------
+void vtkPhongImageComparison::SetThreshold(double threshold)
+{
+  vtkPhongSetClamped(this, "Threshold", this->Threshold, threshold, 0.0, VTK_DOUBLE_MAX);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongImageComparison::SetRelativeThreshold(double threshold)
+{
+  vtkPhongSetClamped(
+    this, "RelativeThreshold", this->RelativeThreshold, threshold, 0.0, VTK_DOUBLE_MAX);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongImageComparison::SetRelativeErrorFloor(double floor)
+{
+  vtkPhongSetClamped(
+    this, "RelativeErrorFloor", this->RelativeErrorFloor, floor, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX);
+}
 
 //------------------------------------------------------------------------------
 vtkPhongImageComparison::~vtkPhongImageComparison()

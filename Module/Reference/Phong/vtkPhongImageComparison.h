@@ -84,20 +84,21 @@ public:
    * A channel fails when its absolute error exceeds Threshold (default 1/255, one 8-bit
    * level; range [0, VTK_DOUBLE_MAX]) and, if RelativeThreshold > 0 (default 0, range
    * [0, VTK_DOUBLE_MAX]), its error relative to the mean magnitude of the two values exceeds
-   * RelativeThreshold too.
+   * RelativeThreshold too. NaN is refused with an error (a NaN threshold would pass every
+   * pixel).
    */
-  vtkSetClampMacro(Threshold, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetThreshold(double threshold);
   vtkGetMacro(Threshold, double);
-  vtkSetClampMacro(RelativeThreshold, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetRelativeThreshold(double threshold);
   vtkGetMacro(RelativeThreshold, double);
   ///@}
 
   ///@{
   /**
    * The smallest reference magnitude relative errors divide by. Default 1e-6, range
-   * [VTK_DOUBLE_MIN, VTK_DOUBLE_MAX].
+   * [VTK_DOUBLE_MIN, VTK_DOUBLE_MAX]; NaN is refused with an error.
    */
-  vtkSetClampMacro(RelativeErrorFloor, double, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX);
+  virtual void SetRelativeErrorFloor(double floor);
   vtkGetMacro(RelativeErrorFloor, double);
   ///@}
 

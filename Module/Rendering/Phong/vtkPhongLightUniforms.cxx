@@ -297,7 +297,13 @@ void vtkPhongLightUniforms::AddSpot(
       });
   }
   AppendRGB(arrays.AxisVC, geometry.DirectionVC);
-  const double cone = std::max(light->GetConeAngle(), 0.0);
+  // cos() of a NaN or infinite cone would make every fragment's spot test NaN.
+  const double cone = this->Log.NonNegative(light->GetConeAngle(),
+    [&](std::ostream& os)
+    {
+      os << "Spot light " << this->IndexOf(light) << " has cone angle " << light->GetConeAngle()
+         << "; cone angles must be finite and >= 0, so it is treated as 0.";
+    });
   arrays.CosCutoff.push_back(static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone))));
   const double exponent = this->Log.NonNegative(light->GetExponent(),
     [&](std::ostream& os)

@@ -76,6 +76,15 @@ int TestPhongImageComparison(int argc, char* argv[])
     comparison->SetTestImage(test);
     comparison->SetReferenceImage(reference);
     comparison->SetThreshold(0.07);
+    { // NaN would let every pixel pass (no error exceeds NaN): it is refused.
+      vtkPhongTest::ErrorCollector messages;
+      messages.Observe(comparison);
+      comparison->SetThreshold(std::numeric_limits<double>::quiet_NaN());
+      comparison->SetRelativeErrorFloor(std::numeric_limits<double>::quiet_NaN());
+      checks.Expect(comparison->GetThreshold() == 0.07 &&
+          comparison->GetRelativeErrorFloor() == 1.0e-6 && messages.Contains("NaN refused"),
+        "NaN thresholds are refused with an error");
+    }
     checks.Expect(comparison->Compare() == 0, "one pixel over the threshold fails");
     const double values = 3.0 * W * H;
     checks.Near(comparison->GetMeanError(), (0.1 + 3 * 0.05) / values, 1e-8, "mean error");

@@ -90,6 +90,20 @@ int TestPhongErrors(int, char*[])
   checks.Expect(pixel[1] > 0, "the render goes on with the colour treated as 0");
   material->SetDiffuseColor(0.5, 0.5, 0.5);
 
+  { // vtkLight stores a NaN cone angle as given; as in VTK, a positional light whose cone
+    // is not below 90 degrees is a point light, so NaN lights as a point light would.
+    light->PositionalOn();
+    light->SetConeAngle(180.0);
+    const std::vector<int> point = renderCentre();
+    light->SetConeAngle(nan);
+    checks.Expect(renderCentre() == point, "a NaN cone angle lights as a point light");
+    light->SetConeAngle(-std::numeric_limits<double>::infinity());
+    renderCentre();
+    checks.Expect(messages.Contains("cone angle -inf"), "an infinite cone angle is reported");
+    light->SetConeAngle(30.0);
+    light->PositionalOff();
+  }
+
   mapper->SetDebugViewToSingleLight();
   mapper->SetDebugLightIndex(5);
   renderCentre();
