@@ -29,12 +29,15 @@
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPhongCompositePolyDataMapper.h"
+#include "vtkPhongCompatibility.h"
 #include "vtkPhongMapperCore.h"
+#include "vtkPhongValidBlocks.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkShaderProperty.h"
 
 #include <map>
+#include <vector>
 
 template <class BlockMapper>
 class vtkPhongBlockMapper : public BlockMapper
@@ -138,6 +141,43 @@ protected:
     }
   }
 
+  // VTK's upload reads the block's points through its cell ids unchecked: a block with cells
+  // naming missing points is uploaded from its collapsed copy (the composite mapper reports
+  // it, with its bounds).
+#if VTKPHONG_VTK_9_3
+  void AppendOneBufferObject(vtkRenderer* ren, vtkActor* act,
+    typename BlockMapper::GLBatchElement* element, vtkIdType& offset,
+    std::vector<unsigned char>& colors, std::vector<float>& norms) override
+  {
+    ValidBlockScope scope(element->Parent.PolyData, this->ValidBlocks);
+    this->Superclass::AppendOneBufferObject(ren, act, element, offset, colors, norms);
+  }
+#else
+  void AppendOneBufferObject(vtkRenderer* ren, vtkActor* act,
+    vtkCompositeMapperHelperData* element, vtkIdType& offset, std::vector<unsigned char>& colors,
+    std::vector<float>& norms) override
+  {
+    ValidBlockScope scope(element->Data, this->ValidBlocks);
+    this->Superclass::AppendOneBufferObject(ren, act, element, offset, colors, norms);
+  }
+#endif
+
+  // Points a block pointer at the block's valid copy for as long as it lives.
+  struct ValidBlockScope
+  {
+    ValidBlockScope(vtkPolyData*& block, vtkPhongValidBlocks& blocks)
+      : Block(block)
+      , Original(block)
+    {
+      block = blocks.Get(block, nullptr);
+    }
+    ~ValidBlockScope() { this->Block = this->Original; }
+    ValidBlockScope(const ValidBlockScope&) = delete;
+    void operator=(const ValidBlockScope&) = delete;
+    vtkPolyData*& Block;
+    vtkPolyData* Original;
+  };
+
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override
   {
     this->Superclass::RenderPieceFinish(ren, act);
@@ -148,6 +188,7 @@ protected:
   vtkObject* Reporter() { return this->Parent ? static_cast<vtkObject*>(this->Parent) : this; }
 
   vtkNew<vtkPhongMapperCore> Core;
+  vtkPhongValidBlocks ValidBlocks;
 
 private:
   vtkPhongBlockMapper(const vtkPhongBlockMapper&) = delete;

@@ -1,8 +1,16 @@
 #include "vtkPhongCompositePolyDataMapper.h"
 
+#include "vtkBoundingBox.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeIterator.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPhongCompatibility.h"
 #include "vtkPhongMapperCore.h"
+#include "vtkPhongValidBlocks.h"
+#include "vtkPolyData.h"
 #include "vtkWeakPointer.h"
 
 #if VTKPHONG_VTK_9_3
@@ -28,6 +36,8 @@ struct vtkPhongCompositePolyDataMapper::Internals
   // longer needs (and, on VTK 9.3, keeps them out of reach): their entries then expire.
   std::vector<std::pair<vtkWeakPointer<vtkObject>, vtkPhongMapperCore*>> Helpers;
   std::string LastSignature;
+  // The leaves as the bounds see them: collapsed copies of those with invalid cells.
+  vtkPhongValidBlocks ValidBlocks;
 
   void Add(vtkObject* helper, vtkPhongMapperCore* core)
   {
@@ -85,6 +95,62 @@ vtkCompositeMapperHelper2* vtkPhongCompositePolyDataMapper::CreateHelper()
   return helper;
 }
 #endif
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The bounds of the visible polydata leaves under `node`, as VTK's composite mappers decide
+// visibility: a block's own setting, else its parent's.
+void AddVisibleBounds(vtkDataObject* node, bool parentVisible,
+  vtkCompositeDataDisplayAttributes* attributes, vtkPhongValidBlocks& blocks, vtkBoundingBox& box)
+{
+  const bool visible = (attributes && attributes->HasBlockVisibility(node))
+    ? attributes->GetBlockVisibility(node)
+    : parentVisible;
+  if (auto* tree = vtkDataObjectTree::SafeDownCast(node))
+  {
+    vtkSmartPointer<vtkDataObjectTreeIterator> children;
+    children.TakeReference(tree->NewTreeIterator());
+    children->VisitOnlyLeavesOff();
+    children->TraverseSubTreeOff();
+    for (children->InitTraversal(); !children->IsDoneWithTraversal(); children->GoToNextItem())
+    {
+      AddVisibleBounds(children->GetCurrentDataObject(), visible, attributes, blocks, box);
+    }
+  }
+  else if (auto* block = vtkPolyData::SafeDownCast(node))
+  {
+    vtkPolyData* valid = blocks.Get(block, nullptr);
+    if (visible && valid->GetNumberOfPoints() > 0)
+    {
+      box.AddBounds(valid->GetBounds());
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongCompositePolyDataMapper::ComputeBounds()
+{
+  auto* input = vtkCompositeDataSet::SafeDownCast(this->GetInputDataObject(0, 0));
+  vtkPhongValidBlocks& blocks = this->Internal->ValidBlocks;
+  if (!blocks.AnyInvalid(input, this))
+  {
+    this->Superclass::ComputeBounds();
+    return;
+  }
+  vtkBoundingBox box;
+  AddVisibleBounds(input, true, this->GetCompositeDataDisplayAttributes(), blocks, box);
+  if (box.IsValid())
+  {
+    box.GetBounds(this->Bounds);
+  }
+  else
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+  }
+  this->BoundsMTime.Modified();
+}
 
 //------------------------------------------------------------------------------
 int vtkPhongCompositePolyDataMapper::GetNumberOfHelpers()

@@ -112,6 +112,13 @@ protected:
 #endif
   ///@}
 
+  /**
+   * The superclass's bounds, unless a leaf has cells naming missing points (which VTK's
+   * bounds would read): then the visible leaves' bounds with those cells collapsed, and a
+   * warning.
+   */
+  void ComputeBounds() override;
+
   int DebugView = vtkPhongPolyDataMapper::Final;
   int DebugLightIndex = 0;
   bool ShaderSpecialization = true;

@@ -7,7 +7,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
-#include "vtkPhongCellValidator.h"
+#include "vtkPhongValidBlocks.h"
 #include "vtkPhongClampedSetter.h"
 #include "vtkPhongMapperCore.h"
 #include "vtkPointData.h"
@@ -23,11 +23,8 @@ struct vtkPhongPolyDataMapper::Internals
   vtkNew<vtkOpenMeshNormals> Normals;
   // The mapper named vtkOriginalPointIds for picking itself (and may unname it).
   bool NamedPointIds = false;
-  // The last input checked for cells that name missing points (by its modification time),
-  // and the copy drawn instead when it has such cells (nullptr: the input is fine).
-  vtkPolyData* CheckedInput = nullptr;
-  vtkMTimeType CheckedTime = 0;
-  vtkSmartPointer<vtkPolyData> ValidCopy;
+  // The input, or the copy drawn instead when cells name missing points.
+  vtkPhongValidBlocks ValidInputs;
 };
 
 //------------------------------------------------------------------------------
@@ -51,25 +48,7 @@ void vtkPhongPolyDataMapper::SetNormalsFeatureAngle(double angle)
 // reported once per input change.
 vtkPolyData* vtkPhongPolyDataMapper::GetValidInput(vtkPolyData* input)
 {
-  Internals& internal = *this->Internal;
-  if (!input)
-  {
-    return nullptr;
-  }
-  if (input != internal.CheckedInput || input->GetMTime() != internal.CheckedTime)
-  {
-    internal.CheckedInput = input;
-    internal.CheckedTime = input->GetMTime();
-    internal.ValidCopy = nullptr;
-    const vtkIdType invalid = vtkPhongCellValidator::CountInvalidCells(input);
-    if (invalid > 0)
-    {
-      vtkWarningMacro(<< invalid << " cells of the input name point ids outside [0, "
-                      << input->GetNumberOfPoints() << "); they are not drawn.");
-      internal.ValidCopy = vtkPhongCellValidator::CollapseInvalidCells(input);
-    }
-  }
-  return internal.ValidCopy ? internal.ValidCopy.Get() : input;
+  return this->Internal->ValidInputs.Get(input, this);
 }
 
 //------------------------------------------------------------------------------

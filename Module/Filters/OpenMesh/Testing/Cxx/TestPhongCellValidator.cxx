@@ -1,5 +1,6 @@
 // Cells that name points the polydata does not have: vtkPhongCellValidator finds and collapses
-// them, vtkOpenMeshNormals and vtkPhongPolyDataMapper survive them (no out-of-bounds access:
+// them, vtkOpenMeshNormals, vtkPhongPolyDataMapper and vtkPhongCompositePolyDataMapper
+// survive them (no out-of-bounds access:
 // run under the sanitizer stage too) and say so once, and the clamped double settings refuse
 // NaN instead of storing it.
 
@@ -8,8 +9,10 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkOpenMeshNormals.h"
 #include "vtkPhongCellValidator.h"
+#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
 #include "vtkPhongTestUtilities.h"
@@ -131,6 +134,49 @@ void CheckMapper(vtkPhongTest::Checks& checks)
   checks.Expect(vtkPhongTest::PixelAt(image, 50, 50)[0] > 0, "the valid triangles are drawn");
 }
 
+// A broken block beside a valid one, drawn by the composite mapper (VTK's bounds and upload
+// of each block would read the missing points).
+void CheckCompositeMapper(vtkPhongTest::Checks& checks)
+{
+  vtkNew<vtkPolyData> shifted;
+  shifted->DeepCopy(MakeBrokenMesh());
+  for (vtkIdType p = 0; p < shifted->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    shifted->GetPoint(p, x);
+    shifted->GetPoints()->SetPoint(p, x[0] - 1.5, x[1], x[2]);
+  }
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, MakeBrokenMesh());
+  blocks->SetBlock(1, shifted);
+  vtkPhongTest::Scene scene(100, 100);
+  vtkNew<vtkPhongCompositePolyDataMapper> mapper;
+  mapper->SetInputDataObject(blocks);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  scene.Renderer->AddActor(actor);
+  vtkPhongTest::ErrorCollector messages;
+  messages.Observe(mapper);
+  scene.Renderer->ResetCamera();
+  scene.Window->Render();
+  scene.Window->Render();
+  const double* bounds = mapper->GetBounds();
+  checks.Expect(bounds[0] == -1.5 && bounds[1] == 1.0 && bounds[3] == 1.0,
+    "the composite bounds are those of the valid cells");
+  checks.Expect(messages.Messages.size() == 2 && messages.Contains("they are not drawn"),
+    "the composite mapper warns once per broken block (" +
+      std::to_string(messages.Messages.size()) + ")");
+  checks.Expect(vtkPhongTest::NoGLErrors(scene.Window, "broken blocks"), "no GL error");
+  vtkSmartPointer<vtkImageData> image = vtkPhongTest::Snapshot(scene.Window);
+  int drawn = 0;
+  for (int x = 0; x < 100; ++x)
+  {
+    drawn += vtkPhongTest::PixelAt(image, x, 50)[0] > 0 ? 1 : 0;
+  }
+  checks.Expect(drawn > 30, "both blocks' valid triangles are drawn (" + std::to_string(drawn) +
+      " pixels of the middle row)");
+}
+
 void CheckNaNSetters(vtkPhongTest::Checks& checks)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -162,6 +208,7 @@ int TestPhongCellValidator(int, char*[])
   CheckValidator(checks);
   CheckNormalsFilter(checks);
   CheckMapper(checks);
+  CheckCompositeMapper(checks);
   CheckNaNSetters(checks);
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
 }
