@@ -9,8 +9,10 @@ and every error path (one line on stderr, a non-zero status, never a crash).
 import argparse
 import json
 import os
+import signal
 import struct
 import subprocess
+import time
 
 import vtkphong
 from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
@@ -339,6 +341,34 @@ for arguments, status, words in cases:
     checks.expect(len(lines) == 1 and lines[0].startswith("vtkphong-render: error: ")
                   and words in lines[0], "%s: one error line naming %r, got %r"
                   % (label, words, result.stderr))
+
+
+def children_of(pid):
+    try:
+        with open("/proc/%d/task/%d/children" % (pid, pid)) as stream:
+            return [int(child) for child in stream.read().split()]
+    except OSError:
+        return []
+
+
+# A crash after reading (in VTK, the OpenGL driver, the writer) is one error line too: the
+# command renders in a child process, here killed by SIGSEGV while it works.
+command = subprocess.Popen([args.cli, good, "-o", path("killed.png"), "--size", "1600x1200"],
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+renderer = []
+deadline = time.time() + 60
+while not renderer and command.poll() is None and time.time() < deadline:
+    renderer = children_of(command.pid)
+    time.sleep(0.002)
+if renderer:
+    os.kill(renderer[0], signal.SIGSEGV)
+stdout, stderr = command.communicate(timeout=300)
+lines = stderr.decode("utf-8", "replace").splitlines()
+checks.expect(bool(renderer), "the command renders in a child process")
+checks.expect(command.returncode == 1 and len(lines) == 1
+              and "the renderer crashed (SIGSEGV) on " + good in lines[0],
+              "a crashed renderer: status 1 and one error line (status %d, %r)"
+              % (command.returncode, lines))
 
 environment = dict(os.environ)
 environment.pop("DISPLAY", None)

@@ -5,8 +5,8 @@ An outcome is one of:
   rendered     status 0 and something other than the background in the picture
   blank        status 0 but only background (a failure where a mesh was expected)
   error        status 1 or 2 and exactly one line "vtkphong-render: error: ..." on stderr
-  contained    such an error line saying the reader crashed or did not finish: the reader's
-               child process died or was stopped, the command did not
+  contained    such an error line saying the reader or the renderer crashed, or the reader
+               did not finish: a child process died or was stopped, the command did not
   crash        killed by a signal, another status, a traceback, or not one error line
   hang         still running after the time limit
 """
@@ -20,7 +20,7 @@ import numpy
 
 BACKGROUND = (0.12, 0.12, 0.14)
 OUTCOMES = ("rendered", "blank", "error", "contained", "crash", "hang")
-CONTAINED = ("the reader crashed", "the reader did not finish")
+CONTAINED = ("the reader crashed", "the reader did not finish", "the renderer crashed")
 
 
 def run_cli(cli, mesh, image, timeout, read_limits=(60, 2048)):

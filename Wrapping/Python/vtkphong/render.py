@@ -86,6 +86,8 @@ robustness:
   (VTKPHONG_READ_TIMEOUT, default 300 s); cells naming points that do not
   exist, coordinates that are not finite or beyond 1e30 are refused. A file
   that cannot be read is one line on stderr and status 1, never a crash.
+  The rendering runs in a child process too: should VTK or the OpenGL driver
+  crash on what it was given, that is also one line and status 1.
 
 exit status: 0 on success, 1 when the mesh cannot be read or the image cannot
 be made or written, 2 for bad options or a bad scene file. Errors are one line
@@ -383,10 +385,16 @@ def _read_parts(path, progress, collector):
     return parts
 
 
-def main(arguments=None):
-    """The command: returns its exit status."""
+def main(arguments=None, isolated=False):
+    """The command: returns its exit status.
+
+    isolated: run it in a forked child process (the installed command does), so that a
+    crash anywhere (VTK, the OpenGL driver) is still one error line and status 1.
+    """
     if arguments is None:
         arguments = sys.argv[1:]
+    if isolated and hasattr(os, "fork"):
+        return _main_in_child(arguments)
     try:
         run(arguments)
     except UsageError as error:
@@ -407,5 +415,53 @@ def main(arguments=None):
     return 0
 
 
+def _main_in_child(arguments):
+    """main(arguments) in a forked child; its status, or an error line if a signal ended it.
+
+    The file is already read in a child of its own (_meshio); this one contains what comes
+    after: VTK's pipeline, the OpenGL driver, the image writer."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    child = os.fork()
+    if child == 0:
+        status = 1
+        try:
+            status = main(arguments)
+        except SystemExit as exit:  # --help, --version
+            status = exit.code if isinstance(exit.code, int) else int(exit.code is not None)
+        finally:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            os._exit(status)
+    while True:
+        try:
+            wait_status = os.waitpid(child, 0)[1]
+            break
+        except KeyboardInterrupt:
+            continue  # the terminal's SIGINT reached the child too; it says "interrupted"
+    if os.WIFSIGNALED(wait_status):
+        number = os.WTERMSIG(wait_status)
+        print("%s: error: the renderer crashed (%s) on %s; please report it with the file"
+              % (PROGRAM, _signal_name(number), _mesh_argument(arguments)), file=sys.stderr)
+        return 1
+    return os.WEXITSTATUS(wait_status)
+
+
+def _signal_name(number):
+    import signal
+    try:
+        return signal.Signals(number).name
+    except ValueError:
+        return "signal %d" % number
+
+
+def _mesh_argument(arguments):
+    """The mesh the command line names, for the error line (or "the input")."""
+    try:
+        return make_parser().parse_known_args(arguments)[0].mesh
+    except (UsageError, SystemExit):
+        return "the input"
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(isolated=True))
