@@ -46,6 +46,12 @@ if (NOT EXISTS "${work}/consumer.png")
   message(FATAL_ERROR "the consumer wrote no image")
 endif ()
 
+# A plain VTK program (no vtkPhong name in it) linked with the overrides module's autoinit.
+run("${consumer}/StockVTKProgram" "${work}/stock-program.png")
+if (NOT last_output MATCHES "mapper: vtkPhongPolyDataMapper")
+  message(FATAL_ERROR "the plain VTK program did not get vtkPhong's mapper: ${last_output}")
+endif ()
+
 run("${CMAKE_COMMAND}" -E env "PYTHONPATH=${prefix}/${PYTHON_DESTINATION}" "${PYTHON}" -c
   "import vtkphong, sys; m = vtkphong.vtkPhongPolyDataMapper(); p = vtkphong.vtkPhongProperty(); \
 p.SetShininess(5000.0); assert p.GetShininess() == 5000.0; \
