@@ -2,8 +2,10 @@
 under MPI.
 
     pvbatch --disable-xdisplay-test TestPhongParaViewNormals.py --plugin PhongLighting.so \\
-        --baseline B.png --out DIR [--no-ghosts] [--write-baseline]
+        --baseline B.png --out DIR [--no-ghosts] [--write-baseline] [--server HOST:PORT]
     mpiexec -np 4 pvbatch --disable-xdisplay-test TestPhongParaViewNormals.py ...
+
+(--server: run as pvpython connected to a pvserver, as RunWithPvserver.py does.)
 
 The verdict is the output: "ERROR:" lines on failure, "all checks passed" otherwise.
 
@@ -43,7 +45,7 @@ for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
 
 from paraview import servermanager  # noqa: E402 (after the path fix)
 from paraview.simple import (  # noqa: E402
-    AddLight, CreateRenderView, Delaunay3D, GetParaViewVersion, Hide, LoadPlugin,
+    AddLight, Connect, GetSettingsProxy, CreateRenderView, Delaunay3D, GetParaViewVersion, Hide, LoadPlugin,
     RedistributeDataSet, Render, SaveScreenshot, Show, Sphere)
 from paraview.simple import XMLPolyDataReader  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
@@ -182,8 +184,16 @@ def main():
     parser.add_argument("--out", required=True)
     parser.add_argument("--no-ghosts", action="store_true")
     parser.add_argument("--write-baseline", action="store_true")
+    parser.add_argument("--server", help="HOST:PORT of a pvserver to connect to")
     args = parser.parse_args()
+    args.out = os.path.abspath(args.out)  # the server reads the sphere's file from there
     os.makedirs(args.out, exist_ok=True)
+    if args.server:
+        host, port = args.server.split(":")
+        Connect(host, int(port))
+        LoadPlugin(args.plugin, remote=True, ns=globals())
+        # Render on the server's ranks (and composite there), whatever the data size.
+        GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
     LoadPlugin(args.plugin, remote=False, ns=globals())
     ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
     print("ParaView %s, %d rank(s)%s" % (GetParaViewVersion(), ranks,
