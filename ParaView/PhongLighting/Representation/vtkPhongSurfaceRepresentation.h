@@ -114,8 +114,8 @@ protected:
   ~vtkPhongSurfaceRepresentation() override;
 
   /**
-   * The superclass' pipeline, with vtkOpenMeshNormals between the geometry filter and the
-   * multiblock maker when ComputeNormals is on.
+   * The superclass' pipeline, with the ghost trim, vtkOpenMeshNormals and the ghost removal
+   * between the geometry filter and the multiblock maker when ComputeNormals is on.
    */
   void SetupDefaults() override;
 
@@ -139,8 +139,8 @@ protected:
   bool StashesGhostCells() const { return this->ComputeNormals && this->NormalsAcrossPieces; }
 
   /**
-   * Feed the multiblock maker from the normals filter (ComputeNormals on) or straight from
-   * the geometry filter.
+   * Feed the multiblock maker through the ghost trim, the normals and the ghost removal
+   * (ComputeNormals on) or straight from the geometry filter.
    */
   void ConnectNormals();
 
