@@ -28,7 +28,8 @@
 #                          tables of docs/io.md
 #   ./vtkphong.sh paraview-bench
 #                          time Phong Surface against Surface in pvbatch on 1 and 2
-#                          MPI ranks (a 4M-triangle sphere; docs/paraview.md)
+#                          MPI ranks (a 4M-triangle sphere; docs/paraview.md), then what
+#                          an update costs with the normals across pieces (1M triangles)
 #
 # The build directory is ./build (override with VTKPHONG_BUILD_DIR); the ParaView
 # build's is ./build-paraview (VTKPHONG_PARAVIEW_BUILD_DIR).
@@ -251,6 +252,11 @@ case "$command" in
     for ranks in 1 2; do
       with_display timeout 900 mpiexec --allow-run-as-root --oversubscribe -np "$ranks" \
         pvbatch --disable-xdisplay-test "$root/ParaView/Testing/BenchPhongParaView.py" \
+        --plugin "$plugin"
+    done
+    for ranks in 1 2; do
+      with_display timeout 900 mpiexec --allow-run-as-root --oversubscribe -np "$ranks" \
+        pvbatch --disable-xdisplay-test "$root/ParaView/Testing/BenchPhongParaViewNormals.py" \
         --plugin "$plugin"
     done
     ;;

@@ -1,10 +1,20 @@
 #include "vtkPhongSurfaceRepresentation.h"
 
+#include "vtkAlgorithmOutput.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataSet.h"
+#include "vtkGhostCellsGenerator.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenMeshNormals.h"
 #include "vtkPVLODActor.h"
+#include "vtkPVTrivialProducer.h"
 #include "vtkPhongCompositePolyDataMapper.h"
+#include "vtkPhongGhostCellsStash.h"
 #include "vtkPhongProperty.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 vtkStandardNewMacro(vtkPhongSurfaceRepresentation);
 
@@ -32,6 +42,11 @@ vtkPhongSurfaceRepresentation::vtkPhongSurfaceRepresentation()
   this->Normals->SetWeighting(vtkOpenMeshNormals::Max);
   this->Normals->SetFeatureAngle(30.0);
   this->Normals->SplittingOn();
+  this->GhostCells->BuildIfRequiredOff();
+  this->GhostCells->SetNumberOfGhostLayers(1);
+  this->GhostStash->SetModeToStash();
+  this->GhostTrim->SetModeToTrim();
+  this->GhostRemoval->SetModeToUnstash();
   this->SetupDefaults();
 }
 
@@ -50,13 +65,90 @@ void vtkPhongSurfaceRepresentation::ConnectNormals()
 {
   if (this->ComputeNormals)
   {
-    this->Normals->SetInputConnection(this->GeometryFilter->GetOutputPort());
-    this->MultiBlockMaker->SetInputConnection(this->Normals->GetOutputPort());
+    // Trim and removal run whether or not the stash did: without stashed flags they only
+    // pass the data on.
+    this->GhostTrim->SetInputConnection(this->GeometryFilter->GetOutputPort());
+    this->Normals->SetInputConnection(this->GhostTrim->GetOutputPort());
+    this->GhostRemoval->SetInputConnection(this->Normals->GetOutputPort());
+    this->MultiBlockMaker->SetInputConnection(this->GhostRemoval->GetOutputPort());
   }
   else
   {
     this->MultiBlockMaker->SetInputConnection(this->GeometryFilter->GetOutputPort());
   }
+  this->ApplyNormalArray();
+}
+
+//------------------------------------------------------------------------------
+vtkAlgorithmOutput* vtkPhongSurfaceRepresentation::GetInternalOutputPort(int port, int connection)
+{
+  vtkAlgorithmOutput* internal = this->Superclass::GetInternalOutputPort(port, connection);
+  if (!internal || !this->StashesGhostCells())
+  {
+    return internal;
+  }
+  // Data sets and composite data only (not hyper-tree grids). The decision must be the same
+  // on every rank, the ghost-cell generator being collective: it depends on the number of
+  // ranks and the input's type, never on a rank's own piece.
+  vtkDataObject* data = internal->GetProducer()->GetOutputDataObject(internal->GetIndex());
+  if (!vtkDataSet::SafeDownCast(data) && !vtkCompositeDataSet::SafeDownCast(data))
+  {
+    return internal;
+  }
+  if (vtkPhongSurfaceRepresentation::IsParallel())
+  {
+    this->GhostCells->SetInputConnection(internal);
+    this->GhostStash->SetInputConnection(this->GhostCells->GetOutputPort());
+  }
+  else
+  {
+    this->GhostStash->SetInputConnection(internal);
+  }
+  return this->GhostStash->GetOutputPort();
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongSurfaceRepresentation::IsParallel()
+{
+  auto* controller = vtkMultiProcessController::GetGlobalController();
+  return controller && controller->GetNumberOfProcesses() > 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongSurfaceRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (this->StashesGhostCells() && vtkPhongSurfaceRepresentation::IsParallel())
+  {
+    // Collective: every rank must run it on every update, as ParaView does with its
+    // geometry filter, whether or not its own piece changed.
+    this->GhostCells->Modified();
+  }
+  const auto wholeExtent = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
+  if (this->StashesGhostCells() && inputVector[0]->GetNumberOfInformationObjects() == 1 &&
+    inputVector[0]->GetInformationObject(0)->Has(wholeExtent))
+  {
+    vtkAlgorithmOutput* internal = this->Superclass::GetInternalOutputPort(0, 0);
+    if (auto* producer = vtkPVTrivialProducer::SafeDownCast(internal->GetProducer()))
+    {
+      producer->SetWholeExtent(inputVector[0]->GetInformationObject(0)->Get(wholeExtent));
+    }
+  }
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetNormalArray(const char* name)
+{
+  this->NormalArray = name ? name : "";
+  this->ApplyNormalArray();
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::ApplyNormalArray()
+{
+  // An empty name makes the multiblock maker leave the active normals alone.
+  this->Superclass::SetNormalArray(this->ComputeNormals ? "" : this->NormalArray.c_str());
 }
 
 //------------------------------------------------------------------------------
@@ -115,6 +207,16 @@ void vtkPhongSurfaceRepresentation::SetComputeNormals(int compute)
 }
 
 //------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetNormalsAcrossPieces(int across)
+{
+  if (this->NormalsAcrossPieces != (across != 0))
+  {
+    this->NormalsAcrossPieces = across != 0;
+    this->MarkModified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetNormalsWeighting(int weighting)
 {
   if (this->Normals->GetWeighting() != weighting)
@@ -139,6 +241,17 @@ void vtkPhongSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ComputeNormals: " << (this->ComputeNormals ? "On" : "Off") << "\n";
+  os << indent << "NormalsAcrossPieces: " << (this->NormalsAcrossPieces ? "On" : "Off") << "\n";
+  os << indent << "NormalArray: " << (this->NormalArray.empty() ? "(none)" : this->NormalArray)
+     << "\n";
   os << indent << "Normals:\n";
   this->Normals->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "GhostCells:\n";
+  this->GhostCells->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "GhostStash:\n";
+  this->GhostStash->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "GhostTrim:\n";
+  this->GhostTrim->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "GhostRemoval:\n";
+  this->GhostRemoval->PrintSelf(os, indent.GetNextIndent());
 }

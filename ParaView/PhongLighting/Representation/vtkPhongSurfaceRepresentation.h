@@ -13,6 +13,11 @@
  * Normals: vtkOpenMeshNormals computes them (Max weighting, 30 degree feature angle,
  * splitting on) between ParaView's geometry filter and the view, so every rank computes the
  * normals of its own piece; ComputeNormals off draws the normals the surface carries.
+ * Under MPI the pieces' normals agree where pieces meet (NormalsAcrossPieces, default on):
+ * the representation makes one level of ghost cells (vtkGhostCellsGenerator: ParaView's
+ * sources and filters, RedistributeDataSet included, mostly ignore ghost requests) and keeps
+ * them through the geometry filter (vtkPhongGhostCellsStash) until the normals are made, then
+ * drops them.
  *
  * @sa vtkPhongCompositePolyDataMapper vtkPhongProperty vtkOpenMeshNormals
  */
@@ -24,7 +29,11 @@
 #include "vtkNew.h"                        // for vtkNew
 #include "vtkPhongRepresentationsModule.h" // for export macro
 
+#include <string> // for std::string
+
+class vtkGhostCellsGenerator;
 class vtkOpenMeshNormals;
+class vtkPhongGhostCellsStash;
 
 class VTKPHONGREPRESENTATIONS_EXPORT vtkPhongSurfaceRepresentation
   : public vtkGeometryRepresentationWithFaces
@@ -77,24 +86,78 @@ public:
   void SetNormalsWeighting(int weighting);
   void SetNormalsFeatureAngle(double degrees);
 
+  /**
+   * ParaView's "Normal Array" choice (SelectNormalArray), remembered and applied only while
+   * ComputeNormals is off: with it on, the computed normals are the ones drawn. ParaView
+   * sets "None" when the input has no normals array, and ParaView 5.11 passes that name on
+   * to SetActiveNormals, which would switch the computed normals off again.
+   */
+  void SetNormalArray(const char* name) override;
+
+  /**
+   * On (default): under MPI, make one level of ghost cells and compute each piece's
+   * normals with its neighbours' faces, so that pieces meet without a seam. Off: each
+   * piece's normals see that piece only (no ghost exchange; a seam where pieces meet).
+   * Only matters while ComputeNormals is on.
+   */
+  void SetNormalsAcrossPieces(int across);
+
+  /**
+   * The superclass' internal input, seen through the ghost-cell stash while normals are
+   * computed across pieces: the geometry filter is connected to what this returns.
+   */
+  using Superclass::GetInternalOutputPort;
+  vtkAlgorithmOutput* GetInternalOutputPort(int port, int connection) override;
+
 protected:
   vtkPhongSurfaceRepresentation();
   ~vtkPhongSurfaceRepresentation() override;
 
   /**
-   * The superclass' pipeline, with vtkOpenMeshNormals between the geometry filter and the
-   * multiblock maker when ComputeNormals is on.
+   * The superclass' pipeline, with the ghost trim, vtkOpenMeshNormals and the ghost removal
+   * between the geometry filter and the multiblock maker when ComputeNormals is on.
    */
   void SetupDefaults() override;
 
   /**
-   * Feed the multiblock maker from the normals filter (ComputeNormals on) or straight from
-   * the geometry filter.
+   * Whether this process is one of several MPI ranks: then ghost cells are made here
+   * (vtkGhostCellsGenerator; the input's own, when it has some, are made again).
+   */
+  static bool IsParallel();
+
+  /**
+   * The superclass' RequestData. It forwards the input's whole extent to the internal
+   * input's producer only when it gets that producer's port, which it does not while the
+   * stash is in between: forward it here first.
+   */
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  /**
+   * Whether the ghost-cell stash is in the pipeline (ComputeNormals and NormalsAcrossPieces).
+   */
+  bool StashesGhostCells() const { return this->ComputeNormals && this->NormalsAcrossPieces; }
+
+  /**
+   * Feed the multiblock maker through the ghost trim, the normals and the ghost removal
+   * (ComputeNormals on) or straight from the geometry filter.
    */
   void ConnectNormals();
 
+  /**
+   * Tell the superclass which normals to draw: none named (the computed ones stay active)
+   * while ComputeNormals is on, the user's NormalArray otherwise.
+   */
+  void ApplyNormalArray();
+
   bool ComputeNormals = true;
+  bool NormalsAcrossPieces = true;
+  std::string NormalArray;
+  vtkNew<vtkGhostCellsGenerator> GhostCells;
+  vtkNew<vtkPhongGhostCellsStash> GhostStash;
+  vtkNew<vtkPhongGhostCellsStash> GhostTrim;
   vtkNew<vtkOpenMeshNormals> Normals;
+  vtkNew<vtkPhongGhostCellsStash> GhostRemoval;
 
 private:
   vtkPhongSurfaceRepresentation(const vtkPhongSurfaceRepresentation&) = delete;

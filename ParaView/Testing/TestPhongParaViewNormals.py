@@ -1,0 +1,247 @@
+"""The normals "Phong Surface" computes, on data that carries none, in pvbatch serially and
+under MPI.
+
+    pvbatch --disable-xdisplay-test TestPhongParaViewNormals.py --plugin PhongLighting.so \\
+        --baseline B.png --out DIR [--no-ghosts] [--write-baseline] [--server HOST:PORT]
+    mpiexec -np 4 pvbatch --disable-xdisplay-test TestPhongParaViewNormals.py ...
+
+(--server: run as pvpython connected to a pvserver, as RunWithPvserver.py does.)
+
+The verdict is the output: "ERROR:" lines on failure, "all checks passed" otherwise.
+
+The data: a 24 x 24 sphere (VTK's vtkSphereSource) with its Normals array removed, written
+to a .vtp file and read back, so that it starts whole on rank 0 (ParaView's Sphere source
+would make one piece per rank, with its own points on each side of the cuts). Then
+RedistributeDataSet spreads its cells over the ranks (with one rank it only turns the
+polydata into an unstructured grid).
+Checks, each failing with "ERROR:":
+
+1. smooth: drawn diffusely by "Phong Surface", it is close to the same sphere drawn with
+   its exact normals (the source's own, ComputeNormals off): the mean difference and the
+   share of pixels more than 8 levels off stay under thresholds. Faceted shading (the
+   normals lost on the way to the mapper) is 5.4 levels and 22 % off;
+2. not faceted: it differs from ParaView's own "Surface" on the same data (which has no
+   normals to draw and is faceted);
+3. the same for a volume without normals (Delaunay3D of the sphere's points: a tetrahedral
+   unstructured grid whose surface ParaView's geometry filter extracts);
+4. no seam: the lit, composited picture of the surface equals the serial baseline pixel for
+   pixel (within a tight threshold) whatever the number of ranks; so does the volume's
+   diffuse picture, against the exact normals' one (which serially it equals within a
+   level). Where the pieces meet, each rank's
+   normals must see the faces of its neighbours (ghost cells); --no-ghosts turns the
+   representation's NormalsAcrossPieces off, to show that this check sees the seam that
+   follows.
+"""
+
+import argparse
+import os
+import sys
+
+# pvpython puts the system VTK's vtkmodules before PYTHONPATH (docs/paraview.md): ParaView's
+# own Python package, unpacked from python3-paraview, must come first.
+for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
+    if entry:
+        sys.path.insert(0, entry)
+
+from paraview import servermanager  # noqa: E402 (after the path fix)
+from paraview.simple import (  # noqa: E402
+    AddLight, Connect, GetSettingsProxy, CreateRenderView, Delaunay3D, GetParaViewVersion, Hide, LoadPlugin,
+    RedistributeDataSet, Render, SaveScreenshot, Show, Sphere)
+from paraview.simple import XMLPolyDataReader  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter  # noqa: E402
+
+SIZE = (400, 400)
+# Thresholds: (mean levels over the sphere's pixels, share of them more than 8 levels off).
+SMOOTH_LIMITS = (2.0, 0.05)     # computed normals against the exact ones
+FACETED_LEAST = (3.0, 0.10)     # "Surface" (faceted) against "Phong Surface"
+SEAM_LIMITS = (8, 20)           # a pixel differs by more than 8 levels; at most 20 such
+failures = []
+
+
+def fail(message):
+    failures.append(message)
+    print("ERROR: " + message)
+
+
+def read_png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars())
+    return pixels[:, :3].astype(int)
+
+
+def shot(view, out, name):
+    Render(view)
+    path = os.path.join(out, name + ".png")
+    SaveScreenshot(path, view, ImageResolution=list(SIZE))
+    return read_png(path)
+
+
+def compare(a, b):
+    """Mean difference (levels, largest channel) and share of pixels more than 8 levels off,
+    over the pixels where either picture shows the sphere (the background is black)."""
+    on_sphere = (a.max(axis=1) > 8) | (b.max(axis=1) > 8)
+    difference = abs(a - b).max(axis=1)[on_sphere]
+    if difference.size == 0:
+        return 0.0, 0.0, 0
+    return float(difference.mean()), float((difference > 8).mean()), int(difference.size)
+
+
+def write_bare_sphere(out):
+    """The sphere without normals, in one piece, as a file every rank can read."""
+    source = vtkSphereSource()
+    source.SetThetaResolution(24)
+    source.SetPhiResolution(24)
+    source.SetRadius(0.5)
+    source.Update()
+    sphere = source.GetOutput()
+    sphere.GetPointData().RemoveArray("Normals")
+    path = os.path.join(out, "sphere-without-normals.vtp")
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(sphere)
+    writer.Write()
+    return path
+
+
+def make_view():
+    view = CreateRenderView()
+    view.ViewSize = list(SIZE)
+    view.OrientationAxesVisibility = 0
+    view.Background = [0.0, 0.0, 0.0]
+    if hasattr(view, "UseColorPaletteForBackground"):
+        view.UseColorPaletteForBackground = 0
+    view.CameraPosition = [0.6, 0.8, 2.2]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = 30.0
+    # One directional light from the upper left, the light kit off: a light at a slant
+    # shows facets and seams more than the kit's soft fill does.
+    view.UseLight = 0
+    key = AddLight(view=view)
+    key.Coords = "Scene"
+    key.Type = "Directional"
+    key.Position = [-1.0, 1.0, 1.2]
+    key.Intensity = 1.0
+    return view
+
+
+def show(source, view, representation, specular=0.0, compute_normals=True, across=True):
+    display = Show(source, view)
+    display.SetRepresentationType(representation)
+    display.ColorArrayName = [None, ""]
+    display.DiffuseColor = [0.85, 0.8, 0.7]
+    display.Specular = specular
+    if representation == "Phong Surface":
+        display.ComputeNormals = 1 if compute_normals else 0
+        display.Shininess = 40.0
+        display.NormalsAcrossPieces = 1 if across else 0
+    return display
+
+
+def check_smooth(label, smooth, exact, faceted):
+    mean, share, count = compare(smooth, exact)
+    print("%s, Phong Surface against the exact normals: %.2f levels mean, %.1f %% of %d "
+          "pixels more than 8 levels off" % (label, mean, 100.0 * share, count))
+    if mean > SMOOTH_LIMITS[0] or share > SMOOTH_LIMITS[1]:
+        fail("%s: Phong Surface is not smooth (%.2f levels, %.1f %% off the exact normals)"
+             % (label, mean, 100.0 * share))
+    mean, share, _ = compare(faceted, exact)
+    print("%s, Surface (faceted) against the exact normals: %.2f levels mean, %.1f %%"
+          % (label, mean, 100.0 * share))
+    mean, share, _ = compare(smooth, faceted)
+    print("%s, Phong Surface against Surface: %.2f levels mean, %.1f %%"
+          % (label, mean, 100.0 * share))
+    if mean < FACETED_LEAST[0] or share < FACETED_LEAST[1]:
+        fail("%s: Phong Surface looks like the faceted Surface (%.2f levels, %.1f %%)"
+             % (label, mean, 100.0 * share))
+
+
+def check_seam(label, picture, expected, ranks):
+    if expected.shape != picture.shape:
+        fail("%s: picture and reference differ in size" % label)
+        return
+    difference = abs(picture - expected).max(axis=1)
+    differing = int((difference > SEAM_LIMITS[0]).sum())
+    print("%s, %d rank(s) against the serial picture: %d pixels differ by more than %d levels "
+          "(largest %d, mean over the sphere %.3f)" % (
+              label, ranks, differing, SEAM_LIMITS[0], int(difference.max()),
+              float(difference[expected.max(axis=1) > 8].mean())))
+    if differing > SEAM_LIMITS[1]:
+        fail("%s: %d pixels differ from the serial picture: a seam between the pieces"
+             % (label, differing))
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--plugin", required=True)
+    parser.add_argument("--baseline", required=True)
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--no-ghosts", action="store_true")
+    parser.add_argument("--write-baseline", action="store_true")
+    parser.add_argument("--server", help="HOST:PORT of a pvserver to connect to")
+    args = parser.parse_args()
+    args.out = os.path.abspath(args.out)  # the server reads the sphere's file from there
+    os.makedirs(args.out, exist_ok=True)
+    if args.server:
+        host, port = args.server.split(":")
+        Connect(host, int(port))
+        LoadPlugin(args.plugin, remote=True, ns=globals())
+        # Render on the server's ranks (and composite there), whatever the data size.
+        GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
+    LoadPlugin(args.plugin, remote=False, ns=globals())
+    ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+    print("ParaView %s, %d rank(s)%s" % (GetParaViewVersion(), ranks,
+                                         ", no ghost cells" if args.no_ghosts else ""))
+
+    sphere = Sphere(ThetaResolution=24, PhiResolution=24, Radius=0.5)
+    bare = XMLPolyDataReader(FileName=[write_bare_sphere(args.out)])
+    pieces = RedistributeDataSet(Input=bare)
+    volume = RedistributeDataSet(Input=Delaunay3D(Input=bare))
+    across = not args.no_ghosts
+    view = make_view()
+
+    # 1, 2: the redistributed surface without normals, diffuse light only.
+    exact = show(sphere, view, "Phong Surface", compute_normals=False)
+    exact_picture = shot(view, args.out, "exact-%dranks" % ranks)
+    Hide(sphere, view)
+    display = show(pieces, view, "Phong Surface", across=across)
+    smooth_picture = shot(view, args.out, "smooth-%dranks" % ranks)
+    display.SetRepresentationType("Surface")
+    faceted_picture = shot(view, args.out, "faceted-%dranks" % ranks)
+    check_smooth("surface", smooth_picture, exact_picture, faceted_picture)
+
+    # 4: the same with a highlight, against the serial picture.
+    display.SetRepresentationType("Phong Surface")
+    display.Specular = 0.6
+    lit = shot(view, args.out, "lit-%dranks" % ranks)
+    if args.write_baseline:
+        SaveScreenshot(args.baseline, view, ImageResolution=list(SIZE))
+    else:
+        check_seam("surface", lit, read_png(args.baseline), ranks)
+    Hide(pieces, view)
+
+    # 3: a tetrahedral volume without normals.
+    grid = show(volume, view, "Phong Surface", across=across)
+    smooth_picture = shot(view, args.out, "volume-smooth-%dranks" % ranks)
+    grid.SetRepresentationType("Surface")
+    faceted_picture = shot(view, args.out, "volume-faceted-%dranks" % ranks)
+    check_smooth("volume", smooth_picture, exact_picture, faceted_picture)
+    # Serially the volume's computed normals draw the exact normals' picture within a level
+    # (Max's weights are exact for points on a sphere): the exact picture is the serial one.
+    check_seam("volume", smooth_picture, exact_picture, ranks)
+    del exact
+
+    if failures:
+        print("ERROR: %d check(s) failed" % len(failures))
+    else:
+        print("all checks passed")
+
+
+# No sys.exit: pvbatch turns SystemExit into a GLX error at teardown (TestPhongParaView.py).
+main()
