@@ -103,7 +103,14 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
   {
     this->Superclass::BuildShaders(shaders, ren, act);
-    this->Core->ShadersBuilt(shaders, this->LastBoundBO);
+    this->Core->FinishBuild(
+      shaders, this->LastBoundBO, ren, act, this->Reporter(),
+      [&]() { this->Superclass::BuildShaders(shaders, ren, act); },
+      [&]()
+      {
+        this->GetShaderTemplate(shaders, ren, act);
+        this->ReplaceShaderValues(shaders, ren, act);
+      });
   }
 
   void ReplaceShaderLight(

@@ -203,7 +203,14 @@ void vtkPhongPolyDataMapper::BuildShaders(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::BuildShaders(shaders, ren, act);
-  this->Internal->Core->ShadersBuilt(shaders, this->LastBoundBO);
+  this->Internal->Core->FinishBuild(
+    shaders, this->LastBoundBO, ren, act, this,
+    [&]() { this->Superclass::BuildShaders(shaders, ren, act); },
+    [&]()
+    {
+      this->GetShaderTemplate(shaders, ren, act);
+      this->ReplaceShaderValues(shaders, ren, act);
+    });
 }
 
 //------------------------------------------------------------------------------
