@@ -75,7 +75,8 @@ protected:
         state.NormalsMayBeInvalid || this->Core->HasUnusableVectors(normals);
     }
     state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
-    state.HasGeometryShader = this->DrawingEdges(ren, act) || this->HaveWideLines(ren, act) ||
+    state.DrawingEdges = this->DrawingEdges(ren, act);
+    state.HasGeometryShader = state.DrawingEdges || this->HaveWideLines(ren, act) ||
       act->GetShaderProperty()->HasGeometryShaderCode();
     state.DrawingVertices = this->DrawingVertices;
     state.DrawingSelection = this->DrawingSelection;

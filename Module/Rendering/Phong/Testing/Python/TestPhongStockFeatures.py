@@ -9,15 +9,21 @@ Run alone, it prints the table:
         TestPhongStockFeatures.py -B Module/Rendering/Phong/Testing/Data/Baseline -T /tmp [case...]
 """
 
-import sys
+import argparse
+import os
 
 import numpy
 import vtkphong.overrides
 from vtkmodules.vtkCommonCore import (vtkLogger, vtkObjectFactory, vtkOutputWindow,
                                       vtkStringOutputWindow)
-from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkMultiBlockDataSet
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData
+from vtkmodules.vtkFiltersGeneral import vtkVertexGlyphFilter
+from vtkmodules.vtkFiltersSources import (vtkLineSource, vtkPlaneSource,
+                                          vtkRegularPolygonSource, vtkSphereSource)
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkMapper, vtkPolyDataMapper,
                                          vtkRenderWindow, vtkRenderer)
 from vtkmodules.vtkRenderingOpenGL2 import vtkCompositePolyDataMapper2
 from vtkphong import vtkPhongPolyDataMapper
@@ -176,12 +182,110 @@ def light_replacement_composite(scene):
     finish(scene)
 
 
+def surface_with_edges(scene, ambient=0.0, tubes=False):
+    """EdgeVisibilityOn: VTK mixes the edge colour into ambientColor, diffuseColor to black."""
+    actor = scene.actor(sphere(16))
+    prop = shiny(actor)
+    prop.SetAmbient(ambient)
+    prop.EdgeVisibilityOn()
+    prop.SetEdgeColor(0.1, 0.9, 0.3)
+    prop.SetLineWidth(2.0)
+    prop.SetRenderLinesAsTubes(tubes)
+    two_lights(scene.renderer)
+    finish(scene)
+
+
+def surface_with_edges_ambient(scene):
+    surface_with_edges(scene, ambient=0.3)
+
+
+def surface_with_edges_tubes(scene):
+    surface_with_edges(scene, tubes=True)
+
+
+def plane_points_lines():
+    """A plane's polygons, a polyline and vertices, without normals: stock VTK lights the
+    polygons (flat, their normal) and draws the lines and vertices unlit."""
+    plane = vtkPlaneSource()
+    plane.SetResolution(6, 6)
+    line = vtkLineSource()
+    line.SetPoint1(-0.5, -0.3, 0.05)
+    line.SetPoint2(0.5, 0.3, 0.05)
+    line.SetResolution(8)
+    points = vtkRegularPolygonSource()  # its vertices, as verts
+    points.SetNumberOfSides(12)
+    points.SetRadius(0.35)
+    points.SetCenter(0.0, 0.0, 0.1)
+    points.GeneratePolygonOff()
+    points.GeneratePolylineOff()
+    vertices = vtkVertexGlyphFilter()
+    vertices.SetInputConnection(points.GetOutputPort())
+    append = vtkAppendPolyData()
+    for source in (plane, line, vertices):
+        append.AddInputConnection(source.GetOutputPort())
+    append.Update()
+    data = append.GetOutput()
+    data.GetPointData().SetNormals(None)
+    return data
+
+
+def points_and_lines(scene, representation=None):
+    mapper = scene.mapper()
+    mapper.SetInputData(plane_points_lines())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    prop = shiny(actor)
+    prop.SetPointSize(5.0)
+    prop.SetLineWidth(3.0)
+    if representation:
+        representation(prop)
+    scene.renderer.AddActor(actor)
+    scene_light(scene.renderer, (0.3, 0.5, 1.0))
+    finish(scene)
+
+
+def points_representation(scene):
+    """A surface without normals drawn as points: stock VTK draws them unlit."""
+    points_and_lines(scene, lambda prop: prop.SetRepresentationToPoints())
+
+
+def vertex_visibility(scene):
+    actor = scene.actor(sphere(16))
+    prop = shiny(actor)
+    prop.VertexVisibilityOn()
+    prop.SetVertexColor(0.9, 0.9, 0.1)
+    prop.SetPointSize(4.0)
+    two_lights(scene.renderer)
+    finish(scene)
+
+
+def coincident_topology(scene):
+    """A wireframe over the same surface, resolved by VTK's polygon offsets."""
+    for wireframe in (False, True):
+        actor = scene.actor(sphere(20))
+        prop = shiny(actor, (0.2, 0.3, 0.9) if wireframe else (0.9, 0.45, 0.2))
+        if wireframe:
+            prop.SetRepresentationToWireframe()
+            actor.GetMapper().SetRelativeCoincidentTopologyLineOffsetParameters(-1.0, -4.0)
+    vtkMapper.SetResolveCoincidentTopologyToPolygonOffset()
+    two_lights(scene.renderer)
+    finish(scene)
+
+
 CASES = [
-    # name, scene, expectation: "match", or (reason, the most pixels over the threshold)
+    # name, scene, expectation: "match", "match, unlit" (stock VTK does not light it), or
+    # (reason, the most pixels over the threshold)
     ("user //VTK::Light::Impl replacement", light_replacement, "match"),
     ("the same, vtkPhongPolyDataMapper named", light_replacement_direct, "match"),
     ("the same, replaced after VTK's substitutions", light_replacement_after, "match"),
     ("the same, composite mapper", light_replacement_composite, "match"),
+    ("surface with edges", surface_with_edges, "match"),
+    ("surface with edges, Ambient 0.3", surface_with_edges_ambient, "match"),
+    ("surface with edges as tubes", surface_with_edges_tubes, "match"),
+    ("vertex visibility", vertex_visibility, "match"),
+    ("points and lines of input without normals", points_and_lines, "match"),
+    ("surface without normals as points", points_representation, "match, unlit"),
+    ("coincident topology (wireframe over surface)", coincident_topology, "match"),
 ]
 
 
@@ -208,10 +312,29 @@ def difference(stock, phong):
             "over": int((levels > STRICT_LEVELS).sum())}
 
 
+def save(pixels, path):
+    """Both pictures of a case side by side, for a reviewer."""
+    image = vtkImageData()
+    height, width, _ = pixels.shape
+    image.SetDimensions(width, height, 1)
+    image.GetPointData().SetScalars(numpy_to_vtk(pixels.reshape(-1, 3).astype(numpy.uint8)))
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(image)
+    writer.Write()
+
+
 def run_case(name, build, expectation):
     stock, stock_mappers, _ = render(build, False)
     phong, phong_mappers, lit = render(build, True)
-    checks.expect(lit, "%s: vtkPhong's lighting drew it, not the fallback" % name)
+    if OPTIONS.temporary:
+        slug = "".join(c if c.isalnum() else "_" for c in name)[:40]
+        save(numpy.hstack((stock, phong)), os.path.join(
+            OPTIONS.temporary, "TestPhongStockFeatures_%s.png" % slug))
+    unlit = expectation == "match, unlit"  # stock VTK draws it unlit, and so does vtkPhong
+    checks.expect(lit != unlit, "%s: vtkPhong lights it (not its fallback) exactly where "
+                  "stock VTK does" % name)
+    expectation = "match" if unlit else expectation
     checks.expect(all("Phong" not in n for n in stock_mappers),
                   "%s: the stock run used VTK's mappers %s" % (name, stock_mappers))
     checks.expect(phong_mappers and all("Phong" in n for n in phong_mappers),
@@ -273,9 +396,20 @@ def broken_replacement(composite):
           "VTK 9.1 crashes); drawn without the replacement, with an error |" % what)
 
 
+def options():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("-B", dest="baselines")
+    parser.add_argument("-T", dest="temporary")
+    parser.add_argument("cases", nargs="*", help="run only the cases whose names hold these")
+    return parser.parse_args()
+
+
+OPTIONS = options()
+
+
 def main():
     shared_display(vtkRenderWindow())
-    wanted = [a for a in sys.argv[1:] if not a.startswith("-") and "/" not in a]
+    wanted = OPTIONS.cases
     print("| case | max | mean | pixels > %d levels | result |" % STRICT_LEVELS)
     print("|---|---|---|---|---|")
     for name, build, expectation in CASES:
