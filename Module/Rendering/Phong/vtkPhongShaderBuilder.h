@@ -102,6 +102,7 @@ public:
     vtkProperty* FrontMaterial = nullptr;
     vtkProperty* BackMaterial = nullptr; ///< the front material when there is no back one
     int DebugView = 0;                   ///< a vtkPhongPolyDataMapper::DebugViews value
+    int ShadowFactorCount = 0; ///< vtkShadowMapPass's factors in the shader (one per light)
     bool Has(vtkPhongFeature feature) const { return this->Features.Has(feature); }
   };
 
