@@ -10,24 +10,32 @@ Run alone, it prints the table:
 """
 
 import argparse
+import math
 import os
 
 import numpy
 import vtkphong.overrides
-from vtkmodules.vtkCommonCore import (vtkLogger, vtkObjectFactory, vtkOutputWindow,
+from vtkmodules.vtkCommonComputationalGeometry import vtkParametricSpline
+from vtkmodules.vtkCommonCore import (vtkLogger, vtkObjectFactory, vtkOutputWindow, vtkPoints,
                                       vtkStringOutputWindow)
+from vtkmodules.vtkCommonDataModel import vtkPlane
 from vtkmodules.util.numpy_support import numpy_to_vtk
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkMultiBlockDataSet
+from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData, vtkMultiBlockDataSet
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkFiltersCore import vtkAppendPolyData
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCleanPolyData
 from vtkmodules.vtkFiltersGeneral import vtkVertexGlyphFilter
-from vtkmodules.vtkFiltersSources import (vtkLineSource, vtkPlaneSource,
+from vtkmodules.vtkFiltersSources import (vtkCubeSource, vtkLineSource, vtkParametricFunctionSource,
+                                          vtkPlaneSource,
                                           vtkRegularPolygonSource, vtkSphereSource)
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkMapper, vtkPolyDataMapper,
-                                         vtkRenderWindow, vtkRenderer)
-from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkRenderPassCollection,
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkGlyph3DMapper, vtkHardwareSelector,
+                                         vtkLight, vtkLightKit,
+                                         vtkMapper, vtkPolyDataMapper, vtkRenderWindow,
+                                         vtkRenderer)
+from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkLightingMapPass,
+                                            vtkLightsPass, vtkRenderPassCollection,
                                             vtkRenderStepsPass, vtkSequencePass,
-                                            vtkShadowMapPass, vtkSSAOPass)
+                                            vtkShadowMapPass, vtkSSAAPass, vtkSSAOPass,
+                                            vtkToneMappingPass)
 from vtkmodules.vtkRenderingOpenGL2 import vtkCompositePolyDataMapper2
 from vtkphong import vtkPhongPolyDataMapper
 from vtkphong_testing import STRICT_LEVELS, STRICT_PIXEL_BUDGET, Checks, snapshot
@@ -282,14 +290,7 @@ def shadow_scene(scene, lights):
     scene.renderer.AutomaticLightCreationOff()
     lights(scene.renderer)
     shadows = vtkShadowMapPass()
-    passes = vtkRenderPassCollection()
-    passes.AddItem(shadows.GetShadowMapBakerPass())
-    passes.AddItem(shadows)
-    sequence = vtkSequencePass()
-    sequence.SetPasses(passes)
-    camera = vtkCameraPass()
-    camera.SetDelegatePass(sequence)
-    scene.renderer.SetPass(camera)
+    scene.renderer.SetPass(camera_over(shadows.GetShadowMapBakerPass(), shadows))
     scene.window.Render()
 
 
@@ -351,6 +352,198 @@ def ssao(scene):
     scene.window.Render()
 
 
+def lit_spheres(scene, opacity=1.0, resolution=32):
+    """Two overlapping shiny spheres (with normals) under two scene lights."""
+    actors = []
+    for center, color in (((-0.25, 0.0, 0.0), (0.9, 0.4, 0.2)), ((0.25, 0.1, 0.2), (0.2, 0.5, 0.9))):
+        actor = scene.actor(sphere(resolution, center, 0.45))
+        shiny(actor, color).SetOpacity(opacity)
+        actors.append(actor)
+    two_lights(scene.renderer)
+    return actors
+
+
+def depth_peeling(scene):
+    scene.window.SetAlphaBitPlanes(1)
+    scene.renderer.SetUseDepthPeeling(1)
+    scene.renderer.SetMaximumNumberOfPeels(8)
+    scene.renderer.SetOcclusionRatio(0.0)
+    lit_spheres(scene, 0.5)
+    finish(scene)
+
+
+def translucency_oit(scene):
+    lit_spheres(scene, 0.5)
+    finish(scene)
+
+
+def fxaa(scene):
+    scene.renderer.UseFXAAOn()
+    lit_spheres(scene, resolution=12)
+    finish(scene)
+
+
+def with_pass(scene, make_pass):
+    pass_ = make_pass()
+    pass_.SetDelegatePass(vtkRenderStepsPass())
+    scene.renderer.SetPass(pass_)
+
+
+def ssaa(scene):
+    with_pass(scene, vtkSSAAPass)
+    lit_spheres(scene, resolution=12)
+    finish(scene)
+
+
+def tone_mapping(scene):
+    def tone():
+        made = vtkToneMappingPass()
+        made.SetToneMappingType(vtkToneMappingPass.GenericFilmic)
+        return made
+    with_pass(scene, tone)
+    for light in (lit_spheres(scene) and scene.renderer.GetLights()):
+        light.SetIntensity(3.0)
+    finish(scene)
+
+
+def clipping_planes(scene):
+    for actor in lit_spheres(scene):
+        plane = vtkPlane()
+        plane.SetNormal(0.3, -1.0, 0.2)
+        actor.GetMapper().AddClippingPlane(plane)
+    finish(scene)
+
+
+def large_coordinates(scene):
+    """Far from the origin: VTK shifts and scales the vertex buffer and the camera."""
+    offset = (2.0e6, -1.0e6, 3.0e6)
+    for center, color in (((-0.25, 0.0, 0.0), (0.9, 0.4, 0.2)), ((0.25, 0.1, 0.2), (0.2, 0.5, 0.9))):
+        moved = [c + o for c, o in zip(center, offset)]
+        shiny(scene.actor(sphere(32, moved, 0.45)), color)
+    for position, color in (((1.0, 1.0, 1.0), (1.0, 0.85, 0.7)), ((-1.0, 0.5, 0.3), (0.35, 0.5, 1.0))):
+        light = scene_light(scene.renderer, [p + o for p, o in zip(position, offset)], color)
+        light.SetFocalPoint(*offset)
+    finish(scene)
+
+
+def glyphs(scene):
+    """vtkGlyph3DMapper draws with VTK's glyph helper, which the switch does not replace."""
+    mapper = vtkGlyph3DMapper()
+    centers = vtkRegularPolygonSource()
+    centers.SetNumberOfSides(6)
+    centers.SetRadius(0.6)
+    mapper.SetInputConnection(centers.GetOutputPort())
+    glyph = sphere(16, radius=0.2)  # kept: an output port does not keep its algorithm alive
+    mapper.SetSourceConnection(glyph.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    shiny(actor)
+    scene.renderer.AddActor(actor)
+    scene.actor(sphere(32, radius=0.3))  # and one polydata mapper, lit by vtkPhong
+    two_lights(scene.renderer)
+    finish(scene)
+
+
+def helix():
+    source = vtkParametricFunctionSource()
+    spiral = vtkParametricSpline()
+    points = vtkPoints()
+    for i in range(40):
+        angle = 0.35 * i
+        points.InsertNextPoint(0.5 * math.cos(angle), -0.6 + 0.03 * i, 0.5 * math.sin(angle))
+    spiral.SetPoints(points)
+    source.SetParametricFunction(spiral)
+    source.SetUResolution(200)
+    return source
+
+
+def lines_as_tubes(scene):
+    prop = shiny(scene.actor(helix()))
+    prop.SetLineWidth(8.0)
+    prop.RenderLinesAsTubesOn()
+    two_lights(scene.renderer)
+    finish(scene)
+
+
+def points_as_spheres(scene):
+    prop = shiny(scene.actor(sphere(12)))
+    prop.SetRepresentationToPoints()
+    prop.SetPointSize(10.0)
+    prop.RenderPointsAsSpheresOn()
+    two_lights(scene.renderer)
+    finish(scene)
+
+
+def light_kit(scene):
+    lit_spheres(scene)
+    scene.renderer.RemoveAllLights()
+    vtkLightKit().AddLightsToRenderer(scene.renderer)
+    finish(scene)
+
+
+def stereo_split(scene):
+    scene.window.SetStereoTypeToSplitViewportHorizontal()
+    scene.window.StereoRenderOn()
+    lit_spheres(scene)
+    finish(scene)
+
+
+def stereo_off_axis(scene):
+    lit_spheres(scene)
+    scene.renderer.ResetCamera()
+    camera = scene.renderer.GetActiveCamera()
+    camera.UseOffAxisProjectionOn()
+    camera.SetScreenBottomLeft(-0.6, -0.6, -1.0)
+    camera.SetScreenBottomRight(0.6, -0.6, -1.0)
+    camera.SetScreenTopRight(0.6, 0.6, -1.0)
+    camera.SetEyePosition((0.1, 0.1, 2.0))
+    scene.renderer.ResetCameraClippingRange()
+    scene.window.Render()
+
+
+def srgb(scene):
+    scene.window.SetUseSRGBColorSpace(True)
+    lit_spheres(scene)
+    finish(scene)
+
+
+def camera_over(*steps):
+    """A camera pass over the sequence of `steps`, as VTK's tests build their pipelines."""
+    passes = vtkRenderPassCollection()
+    for step in steps:
+        passes.AddItem(step)
+    sequence = vtkSequencePass()
+    sequence.SetPasses(passes)
+    camera = vtkCameraPass()
+    camera.SetDelegatePass(sequence)
+    return camera
+
+
+def lighting_map_normals(scene):
+    normals = vtkLightingMapPass()
+    normals.SetRenderType(vtkLightingMapPass.NORMALS)
+    scene.renderer.SetPass(camera_over(vtkLightsPass(), normals))
+    lit_spheres(scene)
+    finish(scene)
+
+
+def wireframe_without_normals(scene):
+    """Triangles drawn as lines, input without normals: stock lights them with per-fragment
+    screen-space normals, vtkPhong with the normals it computes."""
+    source = sphere(16)
+    source.Update()
+    data = source.GetOutput()
+    data.GetPointData().SetNormals(None)
+    mapper = scene.mapper()
+    mapper.SetInputData(data)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    shiny(actor).SetRepresentationToWireframe()
+    scene.renderer.AddActor(actor)
+    two_lights(scene.renderer)
+    finish(scene)
+
+
 CASES = [
     # name, scene, expectation: "match", "match, unlit" (stock VTK does not light it), or
     # (reason, the most pixels over the threshold)
@@ -371,6 +564,24 @@ CASES = [
      ("stock VTK pairs the pass's factor of the i-th light of the renderer with its i-th "
       "switched-on light: past a switched-off light, a light loses its shadow", 3000)),
     ("vtkSSAOPass", ssao, "match"),
+    ("depth peeling", depth_peeling, "match"),
+    ("translucency without depth peeling (OIT)", translucency_oit, "match"),
+    ("FXAA", fxaa, "match"),
+    ("vtkSSAAPass", ssaa, "match"),
+    ("vtkToneMappingPass (HDR)", tone_mapping, "match"),
+    ("clipping planes", clipping_planes, "match"),
+    ("large coordinates (shift and scale)", large_coordinates, "match"),
+    ("glyph mapper", glyphs, "match"),
+    ("lines as tubes", lines_as_tubes, "match"),
+    ("points as spheres", points_as_spheres, "match"),
+    ("vtkLightKit", light_kit, "match"),
+    ("stereo, split viewport", stereo_split, "match"),
+    ("off-axis projection", stereo_off_axis, "match"),
+    ("sRGB window", srgb, "match"),
+    ("vtkLightingMapPass, normals", lighting_map_normals, "match, unlit"),
+    ("wireframe of input without normals", wireframe_without_normals,
+     ("computed smooth normals where stock lights each fragment with screen-space normals",
+      6000)),
 ]
 
 
@@ -481,6 +692,53 @@ def broken_replacement(composite):
           "VTK 9.1 crashes); drawn without the replacement, with an error |" % what)
 
 
+def selected_ids(phong, field):
+    """The ids vtkHardwareSelector finds over the whole window, on a cube without normals
+    (vtkPhong splits its points at the edges: ids must still be the input's)."""
+    if phong:
+        vtkphong.overrides.enable()
+    else:
+        vtkphong.overrides.disable()
+    scene = Scene(phong)
+    cube = vtkCubeSource()
+    merged = vtkCleanPolyData()  # 8 shared corners, which vtkPhong's normals split
+    merged.SetInputConnection(cube.GetOutputPort())
+    merged.Update()
+    data = merged.GetOutput()
+    data.GetPointData().SetNormals(None)
+    mapper = scene.mapper()
+    mapper.SetInputData(data)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.RotateX(30.0)
+    actor.RotateY(40.0)
+    scene.renderer.AddActor(actor)
+    finish(scene)
+    selector = vtkHardwareSelector()
+    selector.SetRenderer(scene.renderer)
+    selector.SetArea(0, 0, SIZE - 1, SIZE - 1)
+    selector.SetFieldAssociation(field)
+    selection = selector.Select()
+    ids = set()
+    for n in range(selection.GetNumberOfNodes()):
+        found = selection.GetNode(n).GetSelectionList()
+        ids.update(int(found.GetTuple1(i)) for i in range(found.GetNumberOfTuples()))
+    scene.window.Finalize()
+    return sorted(ids), mapper.GetClassName()
+
+
+def selection():
+    for field, what in ((vtkDataObject.FIELD_ASSOCIATION_CELLS, "cell"),
+                        (vtkDataObject.FIELD_ASSOCIATION_POINTS, "point")):
+        stock, _ = selected_ids(False, field)
+        phong, name = selected_ids(True, field)
+        checks.expect(name == "vtkPhongPolyDataMapper", "selection drew with vtkPhong: " + name)
+        checks.expect(stock and stock == phong and max(stock) < 8, "hardware selection of %s ids: stock %s, "
+                      "vtkPhong %s" % (what, stock, phong))
+        print("| hardware selection, %s ids (normals split) | - | - | - | %s |"
+              % (what, "the same ids" if stock == phong else "DIFFERENT ids"))
+
+
 def options():
     parser = argparse.ArgumentParser()
     parser.add_argument("-B", dest="baselines")
@@ -500,6 +758,8 @@ def main():
     for name, build, expectation in CASES:
         if not wanted or any(w in name for w in wanted):
             run_case(name, build, expectation)
+    if not wanted or "selection" in wanted:
+        selection()
     if not wanted or "broken" in wanted:
         broken_replacement(False)
         broken_replacement(True)
