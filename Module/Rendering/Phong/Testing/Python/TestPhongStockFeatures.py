@@ -10,6 +10,8 @@ Run alone, it prints the table:
 """
 
 import argparse
+import ctypes
+import ctypes.util
 import math
 import os
 
@@ -43,6 +45,8 @@ from vtkphong import vtkOpenMeshNormals, vtkPhongPolyDataMapper
 from vtkphong_testing import STRICT_LEVELS, STRICT_PIXEL_BUDGET, Checks, snapshot
 
 SIZE = 160
+GL = ctypes.CDLL(ctypes.util.find_library("GL") or "libGL.so.1")
+GL.glGetError.restype = ctypes.c_uint
 checks = Checks()
 
 # A replacement of //VTK::Light::Impl in the style of VTK's cube-map and sphere-map tests: it
@@ -174,12 +178,12 @@ def light_replacement_after(scene):
     finish(scene)
 
 
-def light_replacement_composite(scene):
-    """The replacement on composite data (VTK's composite mapper, vtkPhong's through the
-    switch)."""
+def composite_actor(scene, centers=((-0.6, 0.0, 0.0), (0.6, 0.0, 0.0)), radius=0.5):
+    """Spheres as the blocks of one multiblock, drawn by the composite mapper (VTK's, or
+    vtkPhong's through the switch)."""
     blocks = vtkMultiBlockDataSet()
-    for index, center in enumerate(((-0.6, 0.0, 0.0), (0.6, 0.0, 0.0))):
-        source = sphere(32, center)
+    for index, center in enumerate(centers):
+        source = sphere(32, center, radius)
         source.Update()
         blocks.SetBlock(index, source.GetOutput())
     mapper = composite_mapper()
@@ -187,11 +191,44 @@ def light_replacement_composite(scene):
     mapper.SetInputDataObject(blocks)
     actor = vtkActor()
     actor.SetMapper(mapper)
+    scene.renderer.AddActor(actor)
+    return actor
+
+
+def light_replacement_composite(scene):
+    """The replacement on composite data."""
+    actor = composite_actor(scene)
     shiny(actor)
     actor.GetShaderProperty().AddFragmentShaderReplacement(
         "//VTK::Light::Impl", True, CUBE_MAP_STYLE, False)
-    scene.renderer.AddActor(actor)
     two_lights(scene.renderer)
+    finish(scene)
+
+
+def edges_composite(scene):
+    prop = shiny(composite_actor(scene))
+    prop.EdgeVisibilityOn()
+    prop.SetEdgeColor(0.1, 0.9, 0.3)
+    two_lights(scene.renderer)
+    finish(scene)
+
+
+def shadows_composite(scene):
+    """Shadows on composite data (ParaView draws surfaces with the composite mapper)."""
+    shadow_scene_geometry(scene)
+    shiny(composite_actor(scene, ((0.0, 0.2, 0.6), (0.6, 0.0, -0.5)), 0.25), (0.3, 0.8, 0.3))
+    scene.renderer.AutomaticLightCreationOff()
+    shadow_spots(scene.renderer)
+    shadows = vtkShadowMapPass()
+    scene.renderer.SetPass(camera_over(shadows.GetShadowMapBakerPass(), shadows))
+    scene.window.Render()
+
+
+def lighting_map_luminance(scene):
+    luminance = vtkLightingMapPass()
+    luminance.SetRenderType(vtkLightingMapPass.LUMINANCE)
+    scene.renderer.SetPass(camera_over(vtkLightsPass(), luminance))
+    lit_spheres(scene)
     finish(scene)
 
 
@@ -635,6 +672,7 @@ CASES = [
     ("surface with edges", surface_with_edges, "match"),
     ("surface with edges, Ambient 0.3", surface_with_edges_ambient, "match"),
     ("surface with edges as tubes", surface_with_edges_tubes, "match"),
+    ("surface with edges, composite mapper", edges_composite, "match"),
     ("vertex visibility", vertex_visibility, "match"),
     ("points and lines of input without normals", points_and_lines, "match"),
     ("surface without normals as points", points_representation, "match, unlit"),
@@ -644,6 +682,7 @@ CASES = [
     ("vtkShadowMapPass, spot, switched-off and directional", shadows_mixed,
      ("stock VTK pairs the pass's factor of the i-th light of the renderer with its i-th "
       "switched-on light: past a switched-off light, a light loses its shadow", 1900)),
+    ("vtkShadowMapPass, composite mapper", shadows_composite, "match"),
     ("vtkSSAOPass", ssao, "match"),
     ("depth peeling", depth_peeling, "match"),
     ("translucency without depth peeling (OIT)", translucency_oit, "match"),
@@ -662,12 +701,25 @@ CASES = [
     ("vtkPointFillPass", point_fill, "match"),
     ("surface with edges and edge flags", edge_flags, "match"),
     ("vtkLightingMapPass, normals", lighting_map_normals, "match, unlit"),
+    ("vtkLightingMapPass, luminance", lighting_map_luminance, "match, unlit"),
     ("cone without normals", cone,
      ("computed smooth normals where stock shades each face flat", 800)),
     ("wireframe of input without normals", wireframe_without_normals,
      ("computed smooth normals where stock lights each fragment with screen-space normals",
       4500)),
 ]
+
+
+def gl_errors(window):
+    """The OpenGL errors pending in the window's context (glGetError, through ctypes)."""
+    window.MakeCurrent()
+    errors = []
+    while len(errors) < 16:
+        error = GL.glGetError()
+        if error == 0:
+            break
+        errors.append(hex(error))
+    return errors
 
 
 def render(build, phong):
@@ -679,6 +731,9 @@ def render(build, phong):
     scene = Scene(phong)
     build(scene)
     pixels, _ = snapshot(scene.window)
+    errors = gl_errors(scene.window)
+    checks.expect(not errors, "%s drew with no OpenGL error (%s)"
+                  % ("vtkPhong" if phong else "stock VTK", errors))
     names = sorted({m.GetClassName() for m in scene.mappers})
     # Whether vtkPhong's lighting drew (not its fallback to VTK's): a signature is set.
     lit = all(m.GetLastShaderSignature() for m in scene.mappers
