@@ -341,11 +341,54 @@ void vtkOpenMeshNormalsExecution::CutFan(Index v, const Contribution& contributi
     workspace.Cuts[here] = cut;
     count += cut;
   }
+  if (count <= 1 && this->IsSingularFan(first, last))
+  {
+    // No normal suits all the faces (a cone's apex): each face keeps its own there, or the
+    // averaged normal would shade the cone towards its tip as if it were flat.
+    std::fill(workspace.Cuts.begin() + first, workspace.Cuts.begin() + last, true);
+    count = last - first;
+  }
   workspace.WedgeCount[v] = first == last ? 0 : std::max<Index>(count, 1);
   if (workspace.WedgeCount[v] == 1 && !topology.VertexIsCopy[v])
   {
     this->StoreSingleWedgeNormal(v, contribution);
   }
+}
+
+//------------------------------------------------------------------------------
+// A fan that the feature angle leaves whole but whose faces' mean direction is farther than
+// the feature angle from one of them: a singular vertex (a cone's apex), whose averaged
+// normal would represent none of its faces.
+bool vtkOpenMeshNormalsExecution::IsSingularFan(Index first, Index last) const
+{
+  const vtkOpenMeshNormalsWorkspace& workspace = this->Workspace;
+  Vector mean = { 0.0, 0.0, 0.0 };
+  for (Index here = first; here < last; ++here)
+  {
+    const Index f = this->Topology.FanFaces[here];
+    if (workspace.FaceValid[f])
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        mean[c] += workspace.UnitNormal[f][c];
+      }
+    }
+  }
+  const double length = std::sqrt(Dot(mean, mean));
+  if (!(length > 0.0))
+  {
+    return false;
+  }
+  for (Index here = first; here < last; ++here)
+  {
+    const Index f = this->Topology.FanFaces[here];
+    if (workspace.FaceValid[f] &&
+      Dot(mean, workspace.UnitNormal[f]) <= this->CosFeatureAngle * length)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------

@@ -150,6 +150,7 @@ private:
   void SumSharedPointNormals(const Contribution& contribution);
   template <typename Contribution>
   void CutFan(Index vertex, const Contribution& contribution);
+  bool IsSingularFan(Index first, Index last) const;
   template <typename Contribution>
   void StoreSingleWedgeNormal(Index vertex, const Contribution& contribution);
   void CopySingleWedgeNormals(float* normals) const;

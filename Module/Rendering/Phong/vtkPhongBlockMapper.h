@@ -78,7 +78,8 @@ protected:
         state.NormalsMayBeInvalid || this->Core->HasUnusableVectors(normals);
     }
     state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
-    state.HasGeometryShader = this->DrawingEdges(ren, act) || this->HaveWideLines(ren, act) ||
+    state.DrawingEdges = this->DrawingEdges(ren, act);
+    state.HasGeometryShader = state.DrawingEdges || this->HaveWideLines(ren, act) ||
       act->GetShaderProperty()->HasGeometryShaderCode();
     state.DrawingVertices = this->DrawingVertices;
     state.DrawingSelection = this->DrawingSelection;
@@ -106,7 +107,14 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
   {
     this->Superclass::BuildShaders(shaders, ren, act);
-    this->Core->ShadersBuilt(shaders, this->LastBoundBO);
+    this->Core->FinishBuild(
+      shaders, this->LastBoundBO, ren, act, this->Reporter(),
+      [&]() { this->Superclass::BuildShaders(shaders, ren, act); },
+      [&]()
+      {
+        this->GetShaderTemplate(shaders, ren, act);
+        this->ReplaceShaderValues(shaders, ren, act);
+      });
   }
 
   void ReplaceShaderLight(

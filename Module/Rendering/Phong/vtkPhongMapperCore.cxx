@@ -8,8 +8,10 @@
 #include "vtkPhongCompatibility.h"
 #include "vtkShaderProgram.h"
 
+#include "vtkActor.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLShaderProperty.h"
 #include "vtkRenderer.h"
 #include "vtkWeakPointer.h"
 
@@ -117,6 +119,115 @@ void vtkPhongMapperCore::ShadersBuilt(
   this->Internal->LastGeometrySource = shaders[vtkShader::Geometry]->GetSource();
   this->Internal->LastFragmentSource = shaders[vtkShader::Fragment]->GetSource();
   this->Internal->LastSignature = this->Internal->Plans[cellBO].Signature;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::FinishBuild(std::map<vtkShader::Type, vtkShader*>& shaders,
+  vtkOpenGLHelper* cellBO, vtkRenderer* ren, vtkActor* act, vtkObject* reporter,
+  const std::function<void()>& buildStock, const std::function<void()>& buildBare)
+{
+  if (this->Handles(cellBO))
+  {
+    KeepUserLightOutput(shaders[vtkShader::Fragment], act);
+  }
+  if (!Compiles(shaders, ren))
+  {
+    if (this->Handles(cellBO))
+    {
+      this->FallBackToVTK(cellBO, reporter);
+      buildStock();
+    }
+    if (!Compiles(shaders, ren))
+    {
+      vtkErrorWithObjectMacro(reporter,
+        "The actor's shader replacements (vtkShaderProperty) fail to compile with VTK's own "
+        "shader too; the primitive is drawn without them.");
+      buildBare();
+    }
+  }
+  this->ShadersBuilt(shaders, cellBO);
+}
+
+//------------------------------------------------------------------------------
+// Compile the sources through the window's shader cache, which keeps the program for VTK's
+// own request right after. The cache rewrites the sources it is given (version line, outputs):
+// it gets copies, so that VTK's request hashes the very same text.
+bool vtkPhongMapperCore::Compiles(std::map<vtkShader::Type, vtkShader*>& shaders, vtkRenderer* ren)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window)
+  {
+    return true; // nothing to compile with: VTK will say so
+  }
+  vtkNew<vtkShader> vertex, geometry, fragment;
+  vertex->SetType(vtkShader::Vertex);
+  vertex->SetSource(shaders[vtkShader::Vertex]->GetSource());
+  geometry->SetType(vtkShader::Geometry);
+  geometry->SetSource(shaders[vtkShader::Geometry]->GetSource());
+  fragment->SetType(vtkShader::Fragment);
+  fragment->SetSource(shaders[vtkShader::Fragment]->GetSource());
+  std::map<vtkShader::Type, vtkShader*> copies{ { vtkShader::Vertex, vertex },
+    { vtkShader::Geometry, geometry }, { vtkShader::Fragment, fragment } };
+  return window->GetShaderCache()->ReadyShaderProgram(copies) != nullptr;
+}
+
+//------------------------------------------------------------------------------
+// A vtkPhong variant that failed to compile: remember it (its next plans are VTK's) and
+// draw this primitive with VTK's lighting from now on.
+void vtkPhongMapperCore::FallBackToVTK(const vtkOpenGLHelper* cellBO, vtkObject* reporter)
+{
+  // vtkShaderProgram has already printed the numbered source and the log.
+  const std::string signature = this->Internal->Plans[cellBO].Signature;
+  this->Internal->FailedSignatures.insert(signature);
+  this->Internal->Plans[cellBO] = vtkPhongShaderBuilder::Plan();
+  vtkErrorWithObjectMacro(reporter,
+    "The lighting shader variant ["
+      << signature
+      << "] failed to compile or link (the shader program's errors give the numbered "
+         "source and the compiler log); this primitive falls back to VTK's own lighting.");
+}
+
+//------------------------------------------------------------------------------
+// A user replacement of //VTK::Light::Impl that writes the colour itself (VTK's cube-map
+// examples: ambientColor + diffuse + specular + reflection) takes the place of the lighting,
+// as it does in stock VTK: what vtkPhong adds after the texture (specular, emission, debug
+// views) would count the highlight twice, and is left out.
+void vtkPhongMapperCore::KeepUserLightOutput(vtkShader* fragment, vtkActor* act)
+{
+  if (!UserWritesLightOutput(act))
+  {
+    return;
+  }
+  std::string source = fragment->GetSource();
+  const std::string postBegin = "  // vtkPhong after the texture (";
+  const std::string postEnd = "  // vtkPhong after the texture: end\n";
+  const std::size_t begin = source.find(postBegin);
+  const std::size_t end = source.find(postEnd);
+  if (begin != std::string::npos && end != std::string::npos && begin < end)
+  {
+    source.erase(begin, end + postEnd.size() - begin);
+    fragment->SetSource(source);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongMapperCore::UserWritesLightOutput(vtkActor* act)
+{
+  auto* property = vtkOpenGLShaderProperty::SafeDownCast(act->GetShaderProperty());
+  if (!property)
+  {
+    return false;
+  }
+  for (const auto& replacement : property->GetAllShaderReplacements())
+  {
+    if (replacement.first.ShaderType == vtkShader::Fragment &&
+      replacement.first.OriginalValue == "//VTK::Light::Impl" &&
+      replacement.second.Replacement.find("gl_FragData[0]") != std::string::npos)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------

@@ -24,9 +24,10 @@
 #include "vtkRenderingPhongModule.h" // for export macro
 #include "vtkShader.h"               // for vtkShader::Type
 
-#include <map>    // for std::map
-#include <memory> // for std::unique_ptr
-#include <string> // for std::string
+#include <functional> // for std::function
+#include <map>        // for std::map
+#include <memory>     // for std::unique_ptr
+#include <string>     // for std::string
 
 class vtkActor;
 class vtkDataArray;
@@ -61,13 +62,32 @@ public:
   /**
    * The shader life cycle, from the mapper's overrides of the same names. UpdateShaders:
    * BeginUpdateShaders() before the stock UpdateShaders, EndUpdateShaders() after it; when
-   * EndUpdateShaders returns true the variant failed to compile (the error is reported on
-   * `reporter`) and the mapper calls the stock UpdateShaders once more, which now plans the
-   * primitive with VTK's lighting. ShadersBuilt() (from BuildShaders, after the stock one)
-   * keeps the sources and makes a failed build visible whatever the VTK version.
+   * EndUpdateShaders returns true the program is missing all the same (FinishBuild below
+   * normally prevents it; the error is reported on `reporter`) and the mapper calls the
+   * stock UpdateShaders once more, which now plans the primitive with VTK's lighting.
+   * ShadersBuilt() (from FinishBuild) keeps the sources and makes a failed build visible
+   * whatever the VTK version.
    */
   void BeginUpdateShaders();
   void ShadersBuilt(std::map<vtkShader::Type, vtkShader*>& shaders, vtkOpenGLHelper* cellBO);
+  ///@}
+
+  /**
+   * From the mapper's BuildShaders, after the stock one: make sure the sources compile before
+   * VTK asks for their program (VTK 9.1 dereferences the null program of a first build that
+   * fails). A vtkPhong variant that fails is reported once, remembered, and the primitive
+   * rebuilt with VTK's lighting (`buildStock`, the stock BuildShaders); sources that still fail
+   * (the actor's own shader replacements are broken, where stock VTK 9.1 crashes) are reported
+   * and rebuilt without the replacements (`buildBare`). Ends with ShadersBuilt().
+   */
+  void FinishBuild(std::map<vtkShader::Type, vtkShader*>& shaders, vtkOpenGLHelper* cellBO,
+    vtkRenderer* ren, vtkActor* act, vtkObject* reporter, const std::function<void()>& buildStock,
+    const std::function<void()>& buildBare);
+
+  ///@{
+  /**
+   * The rest of the shader life cycle, from the mapper's overrides of the same names.
+   */
   bool EndUpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkObject* reporter);
   void ReplaceShaderLight(
     std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO);
@@ -123,6 +143,10 @@ protected:
   ~vtkPhongMapperCore() override;
 
 private:
+  static bool Compiles(std::map<vtkShader::Type, vtkShader*>& shaders, vtkRenderer* ren);
+  void FallBackToVTK(const vtkOpenGLHelper* cellBO, vtkObject* reporter);
+  static void KeepUserLightOutput(vtkShader* fragment, vtkActor* act);
+  static bool UserWritesLightOutput(vtkActor* act);
   bool CheckNewProgram(vtkOpenGLHelper& cellBO, vtkObject* reporter);
   void UseProgram(vtkShaderProgram* program, vtkRenderer* ren);
   static std::size_t HashSources(

@@ -25,6 +25,8 @@ struct vtkPhongPolyDataMapper::Internals
   bool NamedPointIds = false;
   // The input, or the copy drawn instead when cells name missing points.
   vtkPhongValidBlocks ValidInputs;
+  // The input drawn before the normals filter replaced it (see StockNeedToRebuildShaders).
+  vtkPolyData* InputWithoutNormals = nullptr;
 };
 
 //------------------------------------------------------------------------------
@@ -149,7 +151,7 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   // The stock test first: it also refreshes this primitive's light complexity.
-  const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  const bool rebuild = this->StockNeedToRebuildShaders(cellBO, ren, act);
 
   // What only the stock mapper's protected state tells (vtkPhongCompositeMapperHelper reads
   // the same for all its blocks).
@@ -165,7 +167,8 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
     : state.HasCellNormals &&
       core->HasUnusableVectors(this->CurrentInput->GetCellData()->GetNormals());
   state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
-  state.HasGeometryShader = this->DrawingEdges(ren, act) || this->HaveWideLines(ren, act) ||
+  state.DrawingEdges = this->DrawingEdges(ren, act);
+  state.HasGeometryShader = state.DrawingEdges || this->HaveWideLines(ren, act) ||
     act->GetShaderProperty()->HasGeometryShaderCode();
   state.DrawingVertices = this->DrawingVertices;
   state.DrawingSelection = this->DrawingSelection;
@@ -178,11 +181,37 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
 }
 
 //------------------------------------------------------------------------------
+// Stock VTK lights points and lines (and a surface drawn as points) only when the input has
+// normals: those computed here for the polygons must not light them. The stock test, which
+// decides the light complexity from the input's normals, sees the input as it was.
+bool vtkPhongPolyDataMapper::StockNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  const bool surface = act->GetProperty()->GetRepresentation() != VTK_POINTS &&
+    (cellBO.PrimitiveType == PrimitiveTris || cellBO.PrimitiveType == PrimitiveTriStrips);
+  vtkPolyData* drawn = this->CurrentInput;
+  if (this->UsedGeneratedNormals && !surface && this->Internal->InputWithoutNormals)
+  {
+    this->CurrentInput = this->Internal->InputWithoutNormals;
+  }
+  const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  this->CurrentInput = drawn;
+  return rebuild;
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::BuildShaders(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::BuildShaders(shaders, ren, act);
-  this->Internal->Core->ShadersBuilt(shaders, this->LastBoundBO);
+  this->Internal->Core->FinishBuild(
+    shaders, this->LastBoundBO, ren, act, this,
+    [&]() { this->Superclass::BuildShaders(shaders, ren, act); },
+    [&]()
+    {
+      this->GetShaderTemplate(shaders, ren, act);
+      this->ReplaceShaderValues(shaders, ren, act);
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -244,6 +273,7 @@ void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
   // instead. The filter re-executes only when its input or settings change.
   vtkPolyData* input = this->GetValidInput(this->CurrentInput);
   this->CurrentInput = input;
+  this->Internal->InputWithoutNormals = input;
   this->UsedGeneratedNormals = this->ComputeMissingNormals && input &&
     (input->GetNumberOfPolys() > 0 || input->GetNumberOfStrips() > 0) &&
     !input->GetPointData()->GetNormals() && !input->GetCellData()->GetNormals() &&

@@ -209,6 +209,9 @@ protected:
   ~vtkPhongPolyDataMapper() override;
 
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /// VTK's test, with the input as it was (no computed normals) for points and lines, which
+  /// stock VTK draws unlit without normals.
+  bool StockNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act);
   void UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void BuildShaders(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;

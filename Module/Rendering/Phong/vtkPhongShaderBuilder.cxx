@@ -6,6 +6,7 @@
 #include "vtkPhongProblemLog.h"
 #include "vtkPhongShaderPlanner.h"
 #include "vtkPhongShaderTemplate.h"
+#include "vtkPhongShadowMaps.h"
 
 vtkStandardNewMacro(vtkPhongShaderBuilder);
 
@@ -71,6 +72,7 @@ void vtkPhongShaderBuilder::SetLightUniforms(
   vtkShaderProgram* program, vtkRenderer* ren, const Plan& plan)
 {
   vtkPhongLightUniforms(program, ren, plan, *this->Log).Upload();
+  vtkPhongShadowMaps::UploadLightIndices(program, ren, plan);
 }
 
 //------------------------------------------------------------------------------

@@ -70,6 +70,7 @@ public:
     bool NormalsMayBeInvalid = false; ///< the normals array holds zero, NaN or Inf vectors
     bool NormalsFromShape = false;    ///< points drawn as spheres or lines as tubes
     bool HasGeometryShader = false;
+    bool DrawingEdges = false;     ///< surface with edges: VTK's edge colour is ambientColor
     bool DrawingVertices = false;  ///< the vertex-visibility pass
     bool DrawingSelection = false; ///< the selection-highlight pass
   };
@@ -101,6 +102,7 @@ public:
     vtkProperty* FrontMaterial = nullptr;
     vtkProperty* BackMaterial = nullptr; ///< the front material when there is no back one
     int DebugView = 0;                   ///< a vtkPhongPolyDataMapper::DebugViews value
+    int ShadowFactorCount = 0; ///< vtkShadowMapPass's factors in the shader (one per light)
     bool Has(vtkPhongFeature feature) const { return this->Features.Has(feature); }
   };
 

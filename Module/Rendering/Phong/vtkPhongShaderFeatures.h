@@ -51,6 +51,7 @@ enum class vtkPhongFeature : unsigned char
   Positional,
   PositionalAmbient,
   ShadingNormal,
+  ShadowMaps, ///< vtkShadowMapPass's factors multiply each light (set from the shader source)
   SmoothTerminator,
   SoftSpotEdge,
   Specular,

@@ -113,7 +113,10 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   {
     this->AddPlaceholderLights(plan);
   }
-  const Terms terms = ChooseTerms(plan, !switchedOn.empty(), allFeatures);
+  Terms terms = ChooseTerms(plan, !switchedOn.empty(), allFeatures);
+  // VTK draws a surface's edges by mixing the edge colour into ambientColor (and diffuseColor
+  // to black): the ambient term must be there to show it, whatever the material's Ambient.
+  terms.Ambient = terms.Ambient || (state.DrawingEdges && plan.DebugView == View::Final);
   SetTermFeatures(terms, plan);
   SetLightFeatures(terms, allFeatures, plan);
   SetMaterialFeatures(terms, allFeatures, plan);

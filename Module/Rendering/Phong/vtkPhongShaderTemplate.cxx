@@ -1,6 +1,7 @@
 #include "vtkPhongShaderTemplate.h"
 
 #include "vtkObject.h"
+#include "vtkPhongShadowMaps.h"
 #include "vtkShaderProgram.h"
 
 #include "vtkPhongFS.h"
@@ -174,6 +175,7 @@ void vtkPhongShaderTemplate::FillPlaceholders(
     { "@DIRECTIONAL_COUNT@", plan.DirectionalLights.size() },
     { "@POINT_COUNT@", plan.PointLights.size() },
     { "@SPOT_COUNT@", plan.SpotLights.size() },
+    { "@SHADOW_FACTOR_COUNT@", static_cast<std::size_t>(plan.ShadowFactorCount) },
   };
   for (const auto& placeholder : placeholders)
   {
@@ -205,6 +207,12 @@ void vtkPhongShaderTemplate::Substitute(
   {
     plan.Features.Set(Feature::MaterialUniforms);
   }
+  // Like the colours, vtkShadowMapPass's factors are seen in the source (vtkPhongShadowMaps.h);
+  // per-vertex sums cannot read them.
+  plan.ShadowFactorCount =
+    vtkPhongShadowMaps::CountFactors(shaders[vtkShader::Fragment]->GetSource());
+  plan.Features.Set(
+    Feature::ShadowMaps, plan.ShadowFactorCount > 0 && plan.Has(Feature::SumsPerFragment));
   const bool perVertex = plan.Has(Feature::SumsPerVertex);
   const std::string sums = this->Resolve(vtkPhongLightingLib, "Sums", plan);
   const std::string lights = this->Resolve(vtkPhongLightingLib, "Lights", plan);
@@ -248,8 +256,11 @@ void vtkPhongShaderTemplate::SubstituteFragment(vtkShader* fragmentShader, const
     vtkShaderProgram::Substitute(
       fragment, "//VTK::UniformFlow::Impl", uniformFlow + "  //VTK::UniformFlow::Impl", false);
   }
+  const std::string shadows = plan.Has(Feature::ShadowMaps)
+    ? vtkPhongShadowMaps::CopyFactors(plan.ShadowFactorCount)
+    : std::string();
   vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl",
-    this->Resolve(vtkPhongFS, "Impl", plan) + "  //VTK::Light::Impl", false);
+    shadows + this->Resolve(vtkPhongFS, "Impl", plan) + "  //VTK::Light::Impl", false);
   // VTK multiplies gl_FragData[0] by the texture colour at TCoord::Impl; what
   // must escape the texture (emission, specular) is added right after it.
   vtkShaderProgram::Substitute(fragment, "//VTK::TCoord::Impl",

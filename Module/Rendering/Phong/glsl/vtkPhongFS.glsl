@@ -157,9 +157,32 @@ in vec3 phongSpecularLightBFVSOutput;
   phongTexturedLight += diffuseColor * phongSums.diffuse;
 //PHONG_ENDIF
 //PHONG_ENDIF
+  // VTK's own names for the lit diffuse and specular colours: user replacements of
+  // VTK's light tag read them (VTK's cube-map and sphere-map examples write
+  // ambientColor + diffuse + specular). Unused, the compiler drops them.
+  // (No comment here may name the tag: a user's replacement would land in it.)
+  vec3 diffuse = vec3(0.0);
+  vec3 specular = vec3(0.0);
+//PHONG_IF DIFFUSE
+//PHONG_IF MATERIAL_UNIFORMS
+  diffuse = phongMaterialDiffuse * phongSums.diffuse;
+//PHONG_ENDIF
+//PHONG_IF !MATERIAL_UNIFORMS
+  diffuse = diffuseColor * phongSums.diffuse;
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+//PHONG_IF MATERIAL_UNIFORMS
+  specular = phongMaterialSpecular * phongSums.specular;
+//PHONG_ENDIF
+//PHONG_IF !MATERIAL_UNIFORMS
+  specular = specularColor * phongSums.specular;
+//PHONG_ENDIF
+//PHONG_ENDIF
   gl_FragData[0] = vec4(phongTexturedLight, opacity);
 
 //PHONG_SECTION PostTexture
+  // vtkPhong after the texture (left out when a user replacement writes the colour)
 //PHONG_IF EMISSION
 //PHONG_IF BACK_MATERIAL
   gl_FragData[0].rgb += gl_FrontFacing ? phongEmission : phongEmissionBF;
@@ -187,3 +210,4 @@ in vec3 phongSpecularLightBFVSOutput;
   // G-buffer: the shaded point in view coordinates, for a float target.
   gl_FragData[0] = vec4(vertexVC.xyz, gl_FrontFacing ? 1.0 : 0.5);
 //PHONG_ENDIF
+  // vtkPhong after the texture: end

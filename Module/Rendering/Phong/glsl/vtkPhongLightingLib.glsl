@@ -87,6 +87,22 @@ uniform vec3 phongSpotLightSpecular[@SPOT_COUNT@];
 //PHONG_ENDIF
 //PHONG_ENDIF
 
+//PHONG_IF SHADOW_MAPS
+// vtkShadowMapPass: its factor for each light of the renderer (copied from its
+// factor<i> at the top of the lighting code), and where each light finds its own
+// (vtkPhongShadowMaps.h).
+float phongShadowFactors[@SHADOW_FACTOR_COUNT@];
+//PHONG_IF DIRECTIONAL
+uniform int phongDirectionalLightShadow[@DIRECTIONAL_COUNT@];
+//PHONG_ENDIF
+//PHONG_IF POINT
+uniform int phongPointLightShadow[@POINT_COUNT@];
+//PHONG_ENDIF
+//PHONG_IF SPOT
+uniform int phongSpotLightShadow[@SPOT_COUNT@];
+//PHONG_ENDIF
+//PHONG_ENDIF
+
 //PHONG_IF ATTENUATION
 // Distance attenuation 1/(c + l*d + q*d^2). The denominator is kept above
 // 1e-20 so a light on the surface, or coefficients that vanish, stay finite.
@@ -159,11 +175,22 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
   {
     vec3 L = phongDirectionalLightToLightVC[i];
     float NdotL = dot(N, L);
+//PHONG_IF !SHADOW_MAPS
 //PHONG_IF DIFFUSE
     sums.diffuse += phongDirectionalLightDiffuse[i] * max(NdotL, 0.0);
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
     sums.specular += phongDirectionalLightSpecular[i] * phongSpecular(N, L, V, NdotL, shininess);
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF SHADOW_MAPS
+    float shadow = phongShadowFactors[phongDirectionalLightShadow[i]];
+//PHONG_IF DIFFUSE
+    sums.diffuse += phongDirectionalLightDiffuse[i] * (shadow * max(NdotL, 0.0));
+//PHONG_ENDIF
+//PHONG_IF SPECULAR
+    sums.specular += phongDirectionalLightSpecular[i] * (shadow * phongSpecular(N, L, V, NdotL, shininess));
+//PHONG_ENDIF
 //PHONG_ENDIF
   }
 //PHONG_ENDIF
@@ -177,11 +204,14 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
     float A = phongDistanceAttenuation(phongPointLightAttenuation[i], d);
 //PHONG_ENDIF
 //PHONG_IF !POINT_ATTENUATION
-    const float A = 1.0;
+    float A = 1.0;
 //PHONG_ENDIF
     float NdotL = dot(N, L);
 //PHONG_IF POSITIONAL_AMBIENT
     sums.ambient += A * phongPointLightAmbient[i];
+//PHONG_ENDIF
+//PHONG_IF SHADOW_MAPS
+    A *= phongShadowFactors[phongPointLightShadow[i]]; // the shadow dims diffuse and specular only
 //PHONG_ENDIF
 //PHONG_IF DIFFUSE
     sums.diffuse += (A * max(NdotL, 0.0)) * phongPointLightDiffuse[i];
@@ -218,6 +248,9 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
     float NdotL = dot(N, L);
 //PHONG_IF POSITIONAL_AMBIENT
     sums.ambient += A * phongSpotLightAmbient[i];
+//PHONG_ENDIF
+//PHONG_IF SHADOW_MAPS
+    A *= phongShadowFactors[phongSpotLightShadow[i]]; // the shadow dims diffuse and specular only
 //PHONG_ENDIF
 //PHONG_IF DIFFUSE
     sums.diffuse += (A * max(NdotL, 0.0)) * phongSpotLightDiffuse[i];
