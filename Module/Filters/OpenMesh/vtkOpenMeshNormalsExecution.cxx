@@ -90,10 +90,17 @@ inline vtkOpenMeshNormalsExecution::Index vtkOpenMeshNormalsExecution::WedgeId(
 }
 
 //------------------------------------------------------------------------------
+// Into OpenMesh's vertices, or the topology's own array where it has no
+// halfedge mesh (docs/normals.md, step 4).
 void vtkOpenMeshNormalsExecution::LoadPositions()
 {
   vtkPoints* inputPoints = this->Input->GetPoints();
   vtkOpenMeshNormalsTopology& topology = this->Topology;
+  if (!topology.HasHalfedgeMesh)
+  {
+    topology.VertexPositions.resize(3 * static_cast<size_t>(this->NumberOfVertices));
+  }
+  double* own = topology.VertexPositions.data();
   vtkSMPTools::For(0, this->NumberOfVertices,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -101,11 +108,25 @@ void vtkOpenMeshNormalsExecution::LoadPositions()
       for (vtkIdType v = begin; v < end; ++v)
       {
         inputPoints->GetPoint(topology.VertexPoint[v], p);
-        topology.Mesh.set_point(
-          VertexHandle(static_cast<int>(v)), HalfedgeMesh::Point(p[0], p[1], p[2]));
+        if (topology.HasHalfedgeMesh)
+        {
+          topology.Mesh.set_point(
+            VertexHandle(static_cast<int>(v)), HalfedgeMesh::Point(p[0], p[1], p[2]));
+        }
+        else
+        {
+          std::copy(p, p + 3, own + 3 * v);
+        }
       }
     });
-  this->Positions = this->NumberOfVertices > 0 ? topology.Mesh.points()[0].data() : nullptr;
+  if (this->NumberOfVertices == 0)
+  {
+    this->Positions = nullptr;
+  }
+  else
+  {
+    this->Positions = topology.HasHalfedgeMesh ? topology.Mesh.points()[0].data() : own;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -291,20 +291,21 @@ void Circulate(const HalfedgeMesh& mesh, Index v, Visit&& visit)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenMeshNormalsTopology::Matches(
-  vtkPolyData* input, bool consistency, bool traversal, bool incremental) const
+bool vtkOpenMeshNormalsTopology::Matches(vtkPolyData* input, bool consistency, bool traversal,
+  bool incremental, bool halfedgeMesh) const
 {
   vtkCellArray* polys = input->GetPolys();
   vtkCellArray* strips = input->GetStrips();
   return this->Valid && this->Polys == polys && this->PolysTime == polys->GetMTime() &&
     this->Strips == strips && this->StripsTime == strips->GetMTime() &&
     this->NumberOfPoints == input->GetNumberOfPoints() && this->Consistency == consistency &&
-    this->NonManifoldTraversal == traversal && this->Incremental == incremental;
+    this->NonManifoldTraversal == traversal && this->Incremental == incremental &&
+    this->AlwaysHalfedgeMesh == halfedgeMesh;
 }
 
 //------------------------------------------------------------------------------
 bool vtkOpenMeshNormalsTopology::Build(vtkPolyData* input, bool consistency, bool traversal,
-  bool incremental, vtkOpenMeshNormals* filter)
+  bool incremental, bool halfedgeMesh, vtkOpenMeshNormals* filter)
 {
   this->Valid = false;
   this->NonManifoldFaces = this->RepeatedPointFaces = this->DegenerateFaces = 0;
@@ -336,12 +337,23 @@ bool vtkOpenMeshNormalsTopology::Build(vtkPolyData* input, bool consistency, boo
     ? Buffer<char>(this->NumberOfFaces(), 1)
     : this->FindIrregularFaces(around, twins, sameDirection);
   filter->UpdateProgress(0.5);
-  if (!this->LoadMesh(around, twins, irregular, filter))
+  const bool allRegular = std::find(irregular.begin(), irregular.end(), 1) == irregular.end();
+  this->HasHalfedgeMesh = halfedgeMesh || !allRegular;
+  if (this->HasHalfedgeMesh)
   {
-    return false;
+    if (!this->LoadMesh(around, twins, irregular, filter))
+    {
+      return false;
+    }
+    filter->UpdateProgress(0.6);
+    this->ReadFans();
   }
-  filter->UpdateProgress(0.6);
-  this->ReadFans();
+  else
+  {
+    this->NumberVerticesDirectly(around);
+    filter->UpdateProgress(0.6);
+    this->ReadFansFromTwins(around, twins);
+  }
   filter->UpdateProgress(0.7);
 
   this->Polys = input->GetPolys();
@@ -352,6 +364,7 @@ bool vtkOpenMeshNormalsTopology::Build(vtkPolyData* input, bool consistency, boo
   this->Consistency = consistency;
   this->NonManifoldTraversal = traversal;
   this->Incremental = incremental;
+  this->AlwaysHalfedgeMesh = halfedgeMesh;
   this->Valid = true;
   return true;
 }
