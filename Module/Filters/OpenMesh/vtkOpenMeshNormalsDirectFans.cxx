@@ -20,6 +20,8 @@
 
 #include "vtkSMPTools.h"
 
+#include <atomic>
+
 using namespace vtkOpenMeshNormalsDetail;
 
 //------------------------------------------------------------------------------
@@ -57,10 +59,29 @@ void vtkOpenMeshNormalsTopology::NumberVerticesDirectly(const PointCorners& arou
 
 //------------------------------------------------------------------------------
 // Every corner at a point is in its fan, so the fans' slots are the
-// point-to-corner index's rows (points without corners have no vertex).
-void vtkOpenMeshNormalsTopology::ReadFansFromTwins(
-  const PointCorners& around, const Buffer<Index>& twins)
+// point-to-corner index's rows (points without corners have no vertex). The
+// walks themselves check that each point has one fan, which is what
+// IrregularFaceFinder would check for the halfedge path.
+bool vtkOpenMeshNormalsTopology::ReadFansFromTwins(
+  const PointCorners& around, const Buffer<Index>& twins, const Buffer<char>& sameDirection)
 {
+  std::atomic<bool> regular(true);
+  vtkSMPTools::For(0, static_cast<Index>(twins.size()),
+    [&](Index begin, Index end)
+    {
+      for (Index c = begin; c < end && regular; ++c)
+      {
+        if (twins[c] == NonManifoldEdge || (twins[c] >= 0 && sameDirection[c]))
+        {
+          regular = false;
+        }
+      }
+    });
+  if (!regular)
+  {
+    return false;
+  }
+  this->NumberVerticesDirectly(around);
   const Index numberOfVertices = static_cast<Index>(this->VertexPoint.size());
   this->FanOffsets.resize(numberOfVertices + 1);
   this->FanOffsets[0] = 0;
@@ -76,17 +97,22 @@ void vtkOpenMeshNormalsTopology::ReadFansFromTwins(
   vtkSMPTools::For(0, numberOfVertices,
     [&](Index begin, Index end)
     {
-      for (Index v = begin; v < end; ++v)
+      for (Index v = begin; v < end && regular; ++v)
       {
-        this->FillFanFromTwins(v, around, twins);
+        if (!this->FillFanFromTwins(v, around, twins))
+        {
+          regular = false;
+        }
       }
     });
+  return regular;
 }
 
 //------------------------------------------------------------------------------
 // Vertex v's fan into its slots, in circulation order; an open fan (a
-// boundary vertex) has its last corner unlinked.
-void vtkOpenMeshNormalsTopology::FillFanFromTwins(
+// boundary vertex) has its last corner unlinked. False if the walk does not
+// reach every corner at the point (it has several fans).
+bool vtkOpenMeshNormalsTopology::FillFanFromTwins(
   Index v, const PointCorners& around, const Buffer<Index>& twins)
 {
   const Index p = this->VertexPoint[v];
@@ -126,4 +152,5 @@ void vtkOpenMeshNormalsTopology::FillFanFromTwins(
   {
     this->FanLinked[slot - 1] = 0;
   }
+  return slot == end && (open || c == start);
 }

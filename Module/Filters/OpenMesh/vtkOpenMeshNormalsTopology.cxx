@@ -333,26 +333,20 @@ bool vtkOpenMeshNormalsTopology::Build(vtkPolyData* input, bool consistency, boo
     return false;
   }
   filter->UpdateProgress(0.4);
-  const Buffer<char> irregular = incremental
-    ? Buffer<char>(this->NumberOfFaces(), 1)
-    : this->FindIrregularFaces(around, twins, sameDirection);
-  filter->UpdateProgress(0.5);
-  const bool allRegular = std::find(irregular.begin(), irregular.end(), 1) == irregular.end();
-  this->HasHalfedgeMesh = halfedgeMesh || !allRegular;
+  this->HasHalfedgeMesh =
+    incremental || halfedgeMesh || !this->ReadFansFromTwins(around, twins, sameDirection);
   if (this->HasHalfedgeMesh)
   {
+    const Buffer<char> irregular = incremental
+      ? Buffer<char>(this->NumberOfFaces(), 1)
+      : this->FindIrregularFaces(around, twins, sameDirection);
+    filter->UpdateProgress(0.5);
     if (!this->LoadMesh(around, twins, irregular, filter))
     {
       return false;
     }
     filter->UpdateProgress(0.6);
     this->ReadFans();
-  }
-  else
-  {
-    this->NumberVerticesDirectly(around);
-    filter->UpdateProgress(0.6);
-    this->ReadFansFromTwins(around, twins);
   }
   filter->UpdateProgress(0.7);
 

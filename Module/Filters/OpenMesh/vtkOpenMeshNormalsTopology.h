@@ -208,12 +208,15 @@ private:
   void ReadFans();
   void FillFan(Index vertex);
 
-  // Steps 4-5 without a halfedge mesh, for regular faces only (in
-  // vtkOpenMeshNormalsDirectFans.cxx): the vertices, then each fan walked
-  // across the twins in the order OpenMesh's circulation would give.
+  // Steps 4-5 without a halfedge mesh (in vtkOpenMeshNormalsDirectFans.cxx):
+  // the vertices, then each fan walked across the twins in the order
+  // OpenMesh's circulation would give. False, with nothing to keep, where
+  // some face is not regular (an edge not shared by two opposite faces, a
+  // point of several fans): such a mesh needs the halfedge mesh.
+  bool ReadFansFromTwins(
+    const PointCorners& around, const Buffer<Index>& twins, const Buffer<char>& sameDirection);
   void NumberVerticesDirectly(const PointCorners& around);
-  void ReadFansFromTwins(const PointCorners& around, const Buffer<Index>& twins);
-  void FillFanFromTwins(Index vertex, const PointCorners& around, const Buffer<Index>& twins);
+  bool FillFanFromTwins(Index vertex, const PointCorners& around, const Buffer<Index>& twins);
 
   // What the topology was built from.
   vtkCellArray* Polys = nullptr;
