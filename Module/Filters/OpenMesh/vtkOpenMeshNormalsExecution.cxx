@@ -15,6 +15,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <atomic>
 
 using namespace vtkOpenMeshNormalsDetail;
 
@@ -558,6 +559,12 @@ void vtkOpenMeshNormalsExecution::BuildOutputPolys()
     this->OutputPolys = workspace.LastPolys;
     return;
   }
+  if (this->OutputPolysAreInputPolys(signsUnchanged))
+  {
+    this->OutputPolys = this->Input->GetPolys();
+    workspace.LastPolys = nullptr;
+    return;
+  }
   this->OutputPolys = this->NewOutputPolys();
   if (this->Options.Splitting && signsUnchanged)
   {
@@ -569,6 +576,44 @@ void vtkOpenMeshNormalsExecution::BuildOutputPolys()
   {
     workspace.LastPolys = nullptr;
   }
+}
+
+//------------------------------------------------------------------------------
+// Whether the output polygons would be the input's, id for id: only polygons,
+// each a face as it came (no repeated point removed, none reversed), and
+// every corner keeping its input point (nothing split or copied). Then the
+// input's cell array is passed on, as the points are, instead of writing
+// (and first-touching) a copy: the common case of a smooth, consistent mesh.
+bool vtkOpenMeshNormalsExecution::OutputPolysAreInputPolys(bool signsUnchanged) const
+{
+  const vtkOpenMeshNormalsTopology& topology = this->Topology;
+  if (!signsUnchanged || this->NumberOfStripFaces > 0 || this->Input->GetNumberOfStrips() > 0 ||
+    !this->SplitSource.empty() || topology.RepeatedPointFaces > 0 || topology.DegenerateFaces > 0 ||
+    topology.NumberOfFaces() != this->NumberOfPolys ||
+    std::any_of(topology.FaceReversed.begin(), topology.FaceReversed.end(),
+      [](char reversed) { return reversed != 0; }))
+  {
+    return false;
+  }
+  // Without split points every corner's output point is its input point;
+  // checked rather than assumed, in parallel.
+  const Buffer<Index>& cornerPoint = *this->CornerPoint;
+  const Buffer<Index>& points = topology.Faces.Points;
+  if (&cornerPoint == &points)
+  {
+    return true;
+  }
+  std::atomic<bool> same(cornerPoint.size() == points.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(points.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      if (same &&
+        !std::equal(points.begin() + begin, points.begin() + end, cornerPoint.begin() + begin))
+      {
+        same = false;
+      }
+    });
+  return same;
 }
 
 //------------------------------------------------------------------------------

@@ -307,8 +307,8 @@ void Circulate(const HalfedgeMesh& mesh, Index v, Visit&& visit)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenMeshNormalsTopology::Matches(vtkPolyData* input, bool consistency, bool traversal,
-  bool incremental, bool halfedgeMesh) const
+bool vtkOpenMeshNormalsTopology::Matches(
+  vtkPolyData* input, bool consistency, bool traversal, bool incremental, bool halfedgeMesh) const
 {
   vtkCellArray* polys = input->GetPolys();
   vtkCellArray* strips = input->GetStrips();

@@ -156,9 +156,9 @@ public:
   HalfedgeMesh Mesh;
   bool HasHalfedgeMesh = false;
   Buffer<double> VertexPositions; // x, y, z per vertex, without a halfedge mesh
-  Buffer<Index> VertexPoint; // the input point of each OpenMesh vertex
-  Buffer<char> VertexIsCopy; // a copy made for a face OpenMesh refused
-  Buffer<Index> MeshFace;    // the face of each OpenMesh face (unless the identity)
+  Buffer<Index> VertexPoint;      // the input point of each OpenMesh vertex
+  Buffer<char> VertexIsCopy;      // a copy made for a face OpenMesh refused
+  Buffer<Index> MeshFace;         // the face of each OpenMesh face (unless the identity)
   bool MeshFaceIsIdentity = false;
 
   // The fan of each OpenMesh vertex in circulation order: corners, and
