@@ -40,6 +40,18 @@ vtkPhongPolyDataMapper::vtkPhongPolyDataMapper()
 vtkPhongPolyDataMapper::~vtkPhongPolyDataMapper() = default;
 
 //------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::SetLightCullingBound(double bound)
+{
+  vtkPhongSetClamped(this, "LightCullingBound", this->LightCullingBound, bound, 0.0, 1.0e9);
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongPolyDataMapper::GetNumberOfCulledLights()
+{
+  return this->Internal->Core->GetNumberOfCulledLights();
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::SetNormalsFeatureAngle(double angle)
 {
   vtkPhongSetClamped(this, "NormalsFeatureAngle", this->NormalsFeatureAngle, angle, 0.0, 180.0);
@@ -194,6 +206,7 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
   core->Options.DebugView = this->DebugView;
   core->Options.DebugLightIndex = this->DebugLightIndex;
   core->Options.Specialize = this->ShaderSpecialization;
+  core->Options.LightCullingBound = this->LightCullingBound;
   core->MaximumNumberOfPrograms = this->MaximumNumberOfShaderPrograms;
   return core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
 }
@@ -323,6 +336,7 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalsSplitting: " << (this->NormalsSplitting ? "On" : "Off") << "\n";
   os << indent << "UsedGeneratedNormals: " << (this->UsedGeneratedNormals ? "yes" : "no") << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
+  os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
   os << indent << "MaximumNumberOfShaderPrograms: " << this->MaximumNumberOfShaderPrograms << "\n";
   os << indent << "Lighting:\n";
   this->Internal->Core->PrintSelf(os, indent.GetNextIndent());
@@ -340,6 +354,7 @@ void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
     this->SetNormalsFeatureAngle(phong->GetNormalsFeatureAngle());
     this->SetNormalsSplitting(phong->GetNormalsSplitting());
     this->SetShaderSpecialization(phong->GetShaderSpecialization());
+    this->SetLightCullingBound(phong->GetLightCullingBound());
     this->SetMaximumNumberOfShaderPrograms(phong->GetMaximumNumberOfShaderPrograms());
   }
   this->Superclass::ShallowCopy(mapper);

@@ -156,6 +156,24 @@ public:
 
   ///@{
   /**
+   * Light culling. A point or spot light is left out of this actor's shader when the colour
+   * it could add anywhere in the actor's bounds, with the actor's materials, is small: the
+   * lights left out add at most LightCullingBound together, per channel (linear colour,
+   * before clamping), so the picture differs from the unculled one by at most that much
+   * (docs/lighting-model.md, "Light culling"). Default 0.5 / 255 (half an 8-bit level),
+   * range [0, 1e9]; 0 evaluates every light. Only in the final view (debug views keep every
+   * light). NumberOfCulledLights: how many lights the last planned primitive left out.
+   * Culling changes the light counts of the variant: each culled set is its own cached
+   * program, so a light that moves in and out of reach switches between two compiled
+   * programs.
+   */
+  virtual void SetLightCullingBound(double bound); ///< NaN is refused with an error
+  vtkGetMacro(LightCullingBound, double);
+  int GetNumberOfCulledLights();
+  ///@}
+
+  ///@{
+  /**
    * Shader statistics since the mapper was created (or last released its graphics resources).
    * ShaderCompileCount: how many times the mapper asked the render window for a program
    * whose source it had not used before; each costs a compile and link unless another mapper
@@ -230,6 +248,7 @@ protected:
   bool NormalsSplitting = true;
   bool UsedGeneratedNormals = false;
   bool ShaderSpecialization = true;
+  double LightCullingBound = 0.5 / 255.0;
   int MaximumNumberOfShaderPrograms = 32;
 
 private:

@@ -84,6 +84,9 @@ public:
     /// false: the all-features variant (every optional term and light kind) instead of the
     /// shader the scene needs, for measuring what specialization buys
     bool Specialize = true;
+    /// positional lights may be left out of an actor while the colour they could add there
+    /// stays within this bound (vtkPhongLightCulling); 0 keeps every light
+    double LightCullingBound = 0.5 / 255.0;
   };
 
   /**
@@ -101,6 +104,7 @@ public:
     vtkProperty* FrontMaterial = nullptr;
     vtkProperty* BackMaterial = nullptr; ///< the front material when there is no back one
     int DebugView = 0;                   ///< a vtkPhongPolyDataMapper::DebugViews value
+    int CulledLights = 0;                ///< positional lights left out (vtkPhongLightCulling)
     bool Has(vtkPhongFeature feature) const { return this->Features.Has(feature); }
   };
 
