@@ -172,6 +172,27 @@ public:
   int GetNumberOfCulledLights();
   ///@}
 
+  enum DepthPrePassModes
+  {
+    DepthPrePassOff = 0,
+    DepthPrePassOn = 1,
+    DepthPrePassAutomatic = 2
+  };
+
+  ///@{
+  /**
+   * Depth pre-pass: draw the opaque geometry once with colour writes off (depth only), then
+   * again with the lighting, so that with the depth test (VTK's GL_LEQUAL) only the nearest
+   * surface of each pixel is shaded however many layers lie behind it. Off, On, or Automatic
+   * (the default): on where it pays (docs/results/performance.md, "Depth complexity"). Never
+   * in translucent passes (depth peeling included), hardware selection (picking), for
+   * unlit actors or with edges or vertices shown. UsedDepthPrePass: whether the last draw used it.
+   */
+  vtkSetClampMacro(DepthPrePass, int, DepthPrePassOff, DepthPrePassAutomatic);
+  vtkGetMacro(DepthPrePass, int);
+  vtkGetMacro(UsedDepthPrePass, bool);
+  ///@}
+
   ///@{
   /**
    * Shader statistics since the mapper was created (or last released its graphics resources).
@@ -239,6 +260,8 @@ protected:
   void ComputeBounds() override;
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+  bool WantsDepthPrePass(vtkRenderer* ren, vtkActor* act);
 
   int DebugView = Final;
   int DebugLightIndex = 0;
@@ -249,6 +272,8 @@ protected:
   bool UsedGeneratedNormals = false;
   bool ShaderSpecialization = true;
   double LightCullingBound = 0.5 / 255.0;
+  int DepthPrePass = DepthPrePassAutomatic;
+  bool UsedDepthPrePass = false;
   int MaximumNumberOfShaderPrograms = 32;
 
 private:
