@@ -337,10 +337,10 @@ void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
-// Only opaque surfaces without edges or vertices drawn over them (VTK offsets those against
-// the surface's depth, which the pre-pass already holds), outside selection; Automatic
-// decides from the work
-// the mapper knows of (docs/results/performance.md, "Depth complexity").
+// Only opaque lit surfaces without edges or vertices drawn over them (VTK offsets those
+// against the surface's depth, which the pre-pass already holds), outside selection;
+// Automatic decides from the work the mapper knows of (docs/results/performance.md,
+// "Depth complexity").
 bool vtkPhongPolyDataMapper::WantsDepthPrePass(vtkRenderer* ren, vtkActor* act)
 {
   if (this->DepthPrePass == DepthPrePassOff || act->IsRenderingTranslucentPolygonalGeometry() ||
