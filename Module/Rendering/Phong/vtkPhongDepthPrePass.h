@@ -3,10 +3,10 @@
  * @brief  when vtkPhongPolyDataMapper's automatic depth pre-pass pays (private)
  *
  * The pre-pass draws the geometry a second time (depth only) so that the lit draw shades
- * each pixel once. It costs about one unlit draw of the geometry and saves the lighting of
- * every hidden layer: it pays when the lighting per fragment is expensive compared with
- * drawing the geometry. The break-even was measured on llvmpipe
- * (docs/results/performance.md, "Depth complexity").
+ * each pixel once. It saves the lighting of every hidden layer; on llvmpipe its
+ * colour-masked draw costs nearly a lit one, so it pays only with hidden layers to save.
+ * The break-even was measured on llvmpipe (docs/results/performance.md, "Depth
+ * complexity").
  */
 
 #ifndef vtkPhongDepthPrePass_h

@@ -183,8 +183,11 @@ public:
   /**
    * Depth pre-pass: draw the opaque geometry once with colour writes off (depth only), then
    * again with the lighting, so that with the depth test (VTK's GL_LEQUAL) only the nearest
-   * surface of each pixel is shaded however many layers lie behind it. Off, On, or Automatic
-   * (the default): on where it pays (docs/results/performance.md, "Depth complexity"). Never
+   * surface of each pixel is shaded however many layers lie behind it. Off (the default), On,
+   * or Automatic: on from 4 evaluated lights. It pays only where surfaces are drawn behind
+   * others (nested or folded surfaces drawn back to front: 0.56-0.69x under 8 lights on
+   * llvmpipe); on a single convex surface the depth-only draw costs nearly a lit one (up to
+   * 1.9x), hence not the default (docs/results/performance.md, "Depth complexity"). Never
    * in translucent passes (depth peeling included), hardware selection (picking), for
    * unlit actors or with edges or vertices shown. UsedDepthPrePass: whether the last draw used it.
    */
@@ -272,7 +275,7 @@ protected:
   bool UsedGeneratedNormals = false;
   bool ShaderSpecialization = true;
   double LightCullingBound = 0.5 / 255.0;
-  int DepthPrePass = DepthPrePassAutomatic;
+  int DepthPrePass = DepthPrePassOff;
   bool UsedDepthPrePass = false;
   int MaximumNumberOfShaderPrograms = 32;
 
