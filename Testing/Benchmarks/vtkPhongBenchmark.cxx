@@ -1,6 +1,6 @@
 // vtkPhong's benchmark: prints numbers, asserts nothing.
 //
-//   vtkPhongBenchmark [MESH.off] [--quick]
+//   vtkPhongBenchmark [MESH.off] [--quick] [--only SECTION]
 //
 // 1. Shader variants and build time: how many variants the default scene
 //    (MESH, or a sphere, on a floor under three lights of different kinds)
@@ -13,13 +13,19 @@
 //    geometry, lighting off). The mappers take turns in one window, frame
 //    batch after frame batch, so both see the same machine state; the table
 //    gives medians over the batches and the ratio ours / stock.
+// 3. Then frame time by interpolation and by mesh, and light culling: 64 point lights
+//    over four spheres, culling off and on (--only culling runs that section alone).
+//    Depth complexity: 8 nested shells against the outer one, with and without the pre-pass.
+// 4. --only kinds: every light kind at 1, 8 and 32 lights on the sphere and the meshes given.
 //
 // On llvmpipe fragment work runs on the CPU, so shader cost shows in these
 // times. --quick shrinks everything so ctest can check the program runs.
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
+#include "vtkContourFilter.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
@@ -31,6 +37,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
+#include "vtkRTAnalyticSource.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -578,19 +585,274 @@ void MeshSection(const std::vector<std::string>& meshFiles, bool quick)
 }
 }
 
+// Every light kind at 1, 8 and 32 lights (and VTK's headlight) on the sphere and on each mesh
+// given: the unlit floor, stock and vtkPhong, ratios to stock and to the floor.
+void KindSection(const std::vector<std::string>& meshFiles, bool quick)
+{
+  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
+  std::printf(
+    "\n== Frame time by light kind and count (%dx%d, Phong interpolation; ms) ==\n", width, height);
+  std::printf("%-22s %-15s %9s %9s %9s %9s %9s\n", "mesh", "lights", "unlit", "stock", "vtkPhong",
+    "ours/stk", "ours/unl");
+  std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> meshes;
+  meshes.emplace_back("sphere 256", Sphere(quick ? 32 : 256));
+  for (const auto& file : meshFiles)
+  {
+    vtkNew<vtkPhongOFFReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkPolyDataNormals> normals; // both mappers get the same normals
+    normals->SetInputConnection(reader->GetOutputPort());
+    normals->SplittingOff();
+    normals->Update();
+    meshes.emplace_back(file.substr(file.find_last_of('/') + 1), normals->GetOutput());
+  }
+  std::vector<std::string> sets = { "1 headlight" };
+  for (const char* kind : { "directional", "point", "spot", "mixed" })
+  {
+    for (int count : quick ? std::vector<int>{ 1 } : std::vector<int>{ 1, 8, 32 })
+    {
+      sets.push_back(std::to_string(count) + " " + kind);
+    }
+  }
+  for (const auto& mesh : meshes)
+  {
+    View view(width, height);
+    auto actors = MakeContenders(mesh.second, VTK_PHONG, false, view.Renderer);
+    actors[OursAllFeatures]->VisibilityOff();
+    view.Frame(mesh.second);
+    Contest contest{ view.Window, view.Renderer, quick ? 2 : 5, quick ? 1 : 3,
+      { actors[Unlit], actors[Stock], actors[Ours] } };
+    for (const std::string& set : sets)
+    {
+      SetLights(view.Renderer, set);
+      const auto t = contest.Run();
+      std::printf("%-22s %-15s %9.2f %9.2f %9.2f", set == sets.front() ? mesh.first.c_str() : "",
+        set.c_str(), 1e3 * t[Unlit], 1e3 * t[Stock], 1e3 * t[Ours]);
+      PrintRatio(t[Ours], t[Stock]);
+      PrintRatio(t[Ours], t[Unlit]);
+      std::printf("\n");
+      std::fflush(stdout);
+    }
+  }
+}
+
+// Nested closed shells: contours 200, 209, ..., 263 of vtkRTAnalyticSource (81^3 samples),
+// appended inner shell first or outer shell first, or the outer shell alone.
+vtkSmartPointer<vtkPolyData> Shells(int count, bool innerFirst)
+{
+  vtkNew<vtkRTAnalyticSource> source;
+  source->SetWholeExtent(-40, 40, -40, 40, -40, 40);
+  vtkNew<vtkAppendPolyData> append;
+  for (int i = 0; i < count; ++i)
+  {
+    const int shell = innerFirst ? count - 1 - i : i; // 0: the outermost
+    vtkNew<vtkContourFilter> contour;
+    contour->SetInputConnection(source->GetOutputPort());
+    contour->SetValue(0, 200.0 + 9.0 * shell);
+    contour->ComputeNormalsOn();
+    append->AddInputConnection(contour->GetOutputPort());
+  }
+  append->Update();
+  return append->GetOutput();
+}
+
+// Depth complexity: the lighting's share of the frame (frame minus the same geometry's unlit
+// floor) for 8 nested shells in either order against the outer shell alone, under 1
+// directional and 8 mixed lights: stock, vtkPhong without and with the depth pre-pass.
+void ShellSection(bool quick)
+{
+  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
+  std::printf("\n== Depth complexity: 8 nested shells (%dx%d; ms) ==\n", width, height);
+  std::printf("%-20s %-14s %9s %9s %9s %9s %9s %9s %9s\n", "geometry", "lights", "unlit", "stock",
+    "ours", "ours+pre", "stk lit", "ours lit", "pre lit");
+  const char* names[] = { "outer shell alone", "8, inner first", "8, outer first" };
+  for (const char* set : { "1 directional", "8 mixed" })
+  {
+    double outer[3] = { 0.0, 0.0, 0.0 };
+    for (int which = 0; which < 3; ++which)
+    {
+      auto mesh = which == 0 ? Shells(1, false) : Shells(8, which == 1);
+      View view(width, height);
+      auto actors = MakeContenders(mesh, VTK_PHONG, false, view.Renderer);
+      // The all-features slot becomes vtkPhong with the pre-pass; the plain one without it.
+      auto* plain = vtkPhongPolyDataMapper::SafeDownCast(actors[Ours]->GetMapper());
+      auto* prepass = vtkPhongPolyDataMapper::SafeDownCast(actors[OursAllFeatures]->GetMapper());
+      plain->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
+      prepass->SetShaderSpecialization(true);
+      prepass->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOn);
+      view.Frame(Shells(1, false));
+      SetLights(view.Renderer, set);
+      Contest contest{ view.Window, view.Renderer, quick ? 2 : 5, quick ? 1 : 3, {} };
+      for (const auto& actor : actors)
+      {
+        contest.Actors.push_back(actor);
+      }
+      const auto t = contest.Run();
+      const double lit[3] = { t[Stock] - t[Unlit], t[Ours] - t[Unlit],
+        t[OursAllFeatures] - t[Unlit] };
+      std::printf("%-20s %-14s %9.2f %9.2f %9.2f %9.2f %9.2f %9.2f %9.2f\n", names[which], set,
+        1e3 * t[Unlit], 1e3 * t[Stock], 1e3 * t[Ours], 1e3 * t[OursAllFeatures], 1e3 * lit[0],
+        1e3 * lit[1], 1e3 * lit[2]);
+      if (which == 0)
+      {
+        std::copy(lit, lit + 3, outer);
+      }
+      else
+      {
+        std::printf("%-35s %9s %9s %9s %9s %8.2fx %8.2fx %8.2fx\n", "  lit / outer's lit", "", "",
+          "", "", lit[0] / outer[0], lit[1] / outer[1], lit[2] / outer[2]);
+      }
+      std::fflush(stdout);
+    }
+  }
+}
+
+// Groups of actors drawn in turn, batch after batch (Contest for several actors each).
+std::vector<double> RunGroups(vtkRenderWindow* window,
+  const std::vector<std::vector<vtkActor*>>& groups, int batches, int frames)
+{
+  auto show = [&](size_t which)
+  {
+    for (size_t g = 0; g < groups.size(); ++g)
+    {
+      for (vtkActor* actor : groups[g])
+      {
+        actor->SetVisibility(g == which);
+      }
+    }
+  };
+  std::vector<std::vector<double>> times(groups.size());
+  for (size_t which = 0; which < groups.size(); ++which) // build every shader first
+  {
+    show(which);
+    window->Render();
+    window->WaitForCompletion();
+  }
+  const FrameTimer timer{ window, frames };
+  for (int batch = 0; batch < batches; ++batch)
+  {
+    for (size_t which = 0; which < groups.size(); ++which)
+    {
+      show(which);
+      times[which].push_back(timer.Batch());
+    }
+  }
+  std::vector<double> medians;
+  for (const auto& series : times)
+  {
+    medians.push_back(Median(series));
+  }
+  return medians;
+}
+
+// Light culling: four spheres on a 2 x 2 grid, each with 16 of 64 point lights close in
+// front of it (inverse-square attenuation; the scene of TestPhongLightCulling). vtkPhong
+// with culling off (bound 0) and on (the default 0.5/255, 16 lights per sphere), the stock
+// mapper and the unlit floor.
+void CullingSection(bool quick)
+{
+  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
+  std::printf(
+    "\n== Light culling (4 spheres, 64 point lights, 16 near each; %dx%d; ms) ==\n", width, height);
+  View view(width, height);
+  view.Renderer->AutomaticLightCreationOff();
+  const double spacing = 30.0;
+  const char* names[] = { "unlit", "stock", "vtkPhong, culling off", "vtkPhong, culling on" };
+  std::vector<std::vector<vtkActor*>> groups(4);
+  std::vector<vtkPhongPolyDataMapper*> culled;
+  for (int i = 0; i < 4; ++i)
+  {
+    const double center[3] = { (i % 2 - 0.5) * spacing, (i / 2 - 0.5) * spacing, 0.0 };
+    vtkNew<vtkSphereSource> source;
+    source->SetRadius(1.5);
+    source->SetThetaResolution(quick ? 32 : 256);
+    source->SetPhiResolution(quick ? 32 : 256);
+    source->Update();
+    for (int which = 0; which < 4; ++which)
+    {
+      vtkSmartPointer<vtkPolyDataMapper> mapper;
+      if (which >= 2)
+      {
+        auto phong = vtkSmartPointer<vtkPhongPolyDataMapper>::New();
+        phong->SetLightCullingBound(which == 3 ? 0.5 / 255.0 : 0.0);
+        if (which == 3)
+        {
+          culled.push_back(phong);
+        }
+        mapper = phong;
+      }
+      else
+      {
+        mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::New();
+      }
+      mapper->SetInputData(source->GetOutput());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->SetPosition(center[0], center[1], center[2]);
+      actor->GetProperty()->SetInterpolationToPhong();
+      actor->GetProperty()->SetSpecular(0.4);
+      actor->GetProperty()->SetSpecularPower(20.0);
+      actor->GetProperty()->SetLighting(which != 0);
+      view.Renderer->AddActor(actor);
+      groups[which].push_back(actor);
+    }
+    for (int k = 0; k < 16; ++k)
+    {
+      const double azimuth = 6.283185307 * (k % 8) / 8.0;
+      const double polar = (k < 8 ? 35.0 : 70.0) * 3.14159265358979 / 180.0;
+      vtkNew<vtkLight> light;
+      light->SetLightTypeToSceneLight();
+      light->SetPosition(center[0] + 1.8 * std::sin(polar) * std::cos(azimuth),
+        center[1] + 1.8 * std::sin(polar) * std::sin(azimuth), 1.8 * std::cos(polar));
+      light->SetFocalPoint(center);
+      light->PositionalOn();
+      light->SetConeAngle(180.0);
+      light->SetIntensity(0.03);
+      light->SetAttenuationValues(0.0, 0.0, 1.0);
+      view.Renderer->AddLight(light);
+    }
+  }
+  vtkCamera* camera = view.Renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.0, 0.0, 2.2 * spacing);
+  camera->SetViewAngle(30.0);
+  view.Renderer->ResetCameraClippingRange();
+  const auto t = RunGroups(view.Window, groups, quick ? 2 : 7, quick ? 1 : 4);
+  int evaluated = 0;
+  for (vtkPhongPolyDataMapper* mapper : culled)
+  {
+    evaluated += 64 - mapper->GetNumberOfCulledLights();
+  }
+  std::printf("%-24s %9s %9s %9s\n", "", "ms", "/ stock", "/ off");
+  for (size_t which = 0; which < 4; ++which)
+  {
+    std::printf("%-24s %9.2f %8.2fx %8.2fx\n", names[which], 1e3 * t[which], t[which] / t[1],
+      t[which] / t[2]);
+  }
+  std::printf("(culling on: %d lights evaluated over the 4 spheres, of 256)\n", evaluated);
+  std::fflush(stdout);
+}
+
 int main(int argc, char* argv[])
 {
   std::vector<std::string> meshFiles;
   bool quick = false;
+  std::string only; // one section: shaders, lights, interpolation, meshes, culling
   for (int i = 1; i < argc; ++i)
   {
     if (std::strcmp(argv[i], "--quick") == 0)
     {
       quick = true;
     }
+    else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+    {
+      only = argv[++i];
+    }
     else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
     {
-      std::printf("usage: %s [MESH.off ...] [--quick]\n", argv[0]);
+      std::printf("usage: %s [MESH.off ...] [--quick] [--only shaders|lights|interpolation|"
+                  "meshes|culling|shells|kinds]\n",
+        argv[0]);
       return 0;
     }
     else
@@ -598,9 +860,34 @@ int main(int argc, char* argv[])
       meshFiles.emplace_back(argv[i]);
     }
   }
-  ShaderSection(meshFiles.empty() ? nullptr : meshFiles.front().c_str(), quick);
-  LightSection(quick);
-  InterpolationSection(quick);
-  MeshSection(meshFiles, quick);
+  auto wanted = [&](const char* section) { return only.empty() || only == section; };
+  if (wanted("shaders"))
+  {
+    ShaderSection(meshFiles.empty() ? nullptr : meshFiles.front().c_str(), quick);
+  }
+  if (wanted("lights"))
+  {
+    LightSection(quick);
+  }
+  if (wanted("interpolation"))
+  {
+    InterpolationSection(quick);
+  }
+  if (wanted("meshes"))
+  {
+    MeshSection(meshFiles, quick);
+  }
+  if (wanted("culling"))
+  {
+    CullingSection(quick);
+  }
+  if (wanted("shells"))
+  {
+    ShellSection(quick);
+  }
+  if (only == "kinds" || (only.empty() && quick))
+  {
+    KindSection(meshFiles, quick); // about 10 minutes in full: not in the default run
+  }
   return 0;
 }

@@ -142,14 +142,15 @@ bool vtkOpenMeshNormals::UpdateTopology(vtkPolyData* input)
   const bool consistency = this->Consistency || this->AutoOrientNormals;
   const bool traversal = this->NonManifoldTraversal != 0;
   const bool incremental = this->IncrementalConstruction != 0;
-  if (topology.Matches(input, consistency, traversal, incremental))
+  const bool halfedgeMesh = this->AlwaysHalfedgeMesh != 0;
+  if (topology.Matches(input, consistency, traversal, incremental, halfedgeMesh))
   {
     this->TopologyReused = true;
   }
   else
   {
     this->Internal->Workspace.LastPolys = nullptr; // made from other connectivity
-    if (!topology.Build(input, consistency, traversal, incremental, this))
+    if (!topology.Build(input, consistency, traversal, incremental, halfedgeMesh, this))
     {
       return false;
     }
@@ -181,6 +182,7 @@ void vtkOpenMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NonManifoldTraversal: " << (this->NonManifoldTraversal ? "On" : "Off") << "\n";
   os << indent << "IncrementalConstruction: " << (this->IncrementalConstruction ? "On" : "Off")
      << "\n";
+  os << indent << "AlwaysHalfedgeMesh: " << (this->AlwaysHalfedgeMesh ? "On" : "Off") << "\n";
   os << indent << "OriginalPointIdsArrayName: "
      << (this->OriginalPointIdsArrayName ? this->OriginalPointIdsArrayName : "(none)") << "\n";
   os << indent << "NumberOfInvalidCells: " << this->NumberOfInvalidCells << "\n";

@@ -181,6 +181,20 @@ public:
 
   ///@{
   /**
+   * Build OpenMesh's halfedge mesh also for a mesh whose faces are all regular (two opposite
+   * faces per interior edge, one fan per point). By default such a mesh skips it: the fan of
+   * faces around each point is walked across the corners' twins, which gives the fans
+   * OpenMesh's circulation would, in the same order, without the halfedge mesh's memory.
+   * Meshes with any other face always go through OpenMesh. Default off; the tests use it to
+   * check both paths give identical output.
+   */
+  vtkSetMacro(AlwaysHalfedgeMesh, vtkTypeBool);
+  vtkGetMacro(AlwaysHalfedgeMesh, vtkTypeBool);
+  vtkBooleanMacro(AlwaysHalfedgeMesh, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * The name of the output point array giving each output point's input point id, written
    * when Splitting is on. Default "vtkOriginalPointIds".
    */
@@ -222,6 +236,7 @@ protected:
   vtkTypeBool FlipNormals = 0;
   vtkTypeBool NonManifoldTraversal = 1;
   vtkTypeBool IncrementalConstruction = 0;
+  vtkTypeBool AlwaysHalfedgeMesh = 0;
   char* OriginalPointIdsArrayName = nullptr;
 
   vtkIdType NumberOfInvalidCells = 0;

@@ -15,6 +15,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <atomic>
 
 using namespace vtkOpenMeshNormalsDetail;
 
@@ -90,10 +91,17 @@ inline vtkOpenMeshNormalsExecution::Index vtkOpenMeshNormalsExecution::WedgeId(
 }
 
 //------------------------------------------------------------------------------
+// Into OpenMesh's vertices, or the topology's own array where it has no
+// halfedge mesh (docs/normals.md, step 4).
 void vtkOpenMeshNormalsExecution::LoadPositions()
 {
   vtkPoints* inputPoints = this->Input->GetPoints();
   vtkOpenMeshNormalsTopology& topology = this->Topology;
+  if (!topology.HasHalfedgeMesh)
+  {
+    topology.VertexPositions.resize(3 * static_cast<size_t>(this->NumberOfVertices));
+  }
+  double* own = topology.VertexPositions.data();
   vtkSMPTools::For(0, this->NumberOfVertices,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -101,11 +109,25 @@ void vtkOpenMeshNormalsExecution::LoadPositions()
       for (vtkIdType v = begin; v < end; ++v)
       {
         inputPoints->GetPoint(topology.VertexPoint[v], p);
-        topology.Mesh.set_point(
-          VertexHandle(static_cast<int>(v)), HalfedgeMesh::Point(p[0], p[1], p[2]));
+        if (topology.HasHalfedgeMesh)
+        {
+          topology.Mesh.set_point(
+            VertexHandle(static_cast<int>(v)), HalfedgeMesh::Point(p[0], p[1], p[2]));
+        }
+        else
+        {
+          std::copy(p, p + 3, own + 3 * v);
+        }
       }
     });
-  this->Positions = this->NumberOfVertices > 0 ? topology.Mesh.points()[0].data() : nullptr;
+  if (this->NumberOfVertices == 0)
+  {
+    this->Positions = nullptr;
+  }
+  else
+  {
+    this->Positions = topology.HasHalfedgeMesh ? topology.Mesh.points()[0].data() : own;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -580,6 +602,12 @@ void vtkOpenMeshNormalsExecution::BuildOutputPolys()
     this->OutputPolys = workspace.LastPolys;
     return;
   }
+  if (this->OutputPolysAreInputPolys(signsUnchanged))
+  {
+    this->OutputPolys = this->Input->GetPolys();
+    workspace.LastPolys = nullptr;
+    return;
+  }
   this->OutputPolys = this->NewOutputPolys();
   if (this->Options.Splitting && signsUnchanged)
   {
@@ -591,6 +619,44 @@ void vtkOpenMeshNormalsExecution::BuildOutputPolys()
   {
     workspace.LastPolys = nullptr;
   }
+}
+
+//------------------------------------------------------------------------------
+// Whether the output polygons would be the input's, id for id: only polygons,
+// each a face as it came (no repeated point removed, none reversed), and
+// every corner keeping its input point (nothing split or copied). Then the
+// input's cell array is passed on, as the points are, instead of writing
+// (and first-touching) a copy: the common case of a smooth, consistent mesh.
+bool vtkOpenMeshNormalsExecution::OutputPolysAreInputPolys(bool signsUnchanged) const
+{
+  const vtkOpenMeshNormalsTopology& topology = this->Topology;
+  if (!signsUnchanged || this->NumberOfStripFaces > 0 || this->Input->GetNumberOfStrips() > 0 ||
+    !this->SplitSource.empty() || topology.RepeatedPointFaces > 0 || topology.DegenerateFaces > 0 ||
+    topology.NumberOfFaces() != this->NumberOfPolys ||
+    std::any_of(topology.FaceReversed.begin(), topology.FaceReversed.end(),
+      [](char reversed) { return reversed != 0; }))
+  {
+    return false;
+  }
+  // Without split points every corner's output point is its input point;
+  // checked rather than assumed, in parallel.
+  const Buffer<Index>& cornerPoint = *this->CornerPoint;
+  const Buffer<Index>& points = topology.Faces.Points;
+  if (&cornerPoint == &points)
+  {
+    return true;
+  }
+  std::atomic<bool> same(cornerPoint.size() == points.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(points.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      if (same &&
+        !std::equal(points.begin() + begin, points.begin() + end, cornerPoint.begin() + begin))
+      {
+        same = false;
+      }
+    });
+  return same;
 }
 
 //------------------------------------------------------------------------------

@@ -158,6 +158,7 @@ private:
   void StoreWedgeNormalsOf(Index vertex, const Contribution& contribution, float* normals);
   void AssignWedgeCorners(Index vertex, Index runStart, Index runEnd, Index id);
   vtkSmartPointer<vtkCellArray> NewOutputPolys() const;
+  bool OutputPolysAreInputPolys(bool signsUnchanged) const;
   void CountPolygonSizes(vtkIdType* offsets, std::vector<vtkIdType>& degenerateIds,
     std::vector<vtkIdType>& degenerateFirst) const;
   void WriteFace(vtkIdType face, vtkIdType* out) const;

@@ -63,38 +63,54 @@ public:
     }
   }
 
-  // The twin of corner c of the face whose corners are [first, last), or
-  // NoTwin or NonManifoldEdge; same: the twin runs the edge the same way.
-  Index Find(Index c, Index first, Index last, char& same) const
+  // The twins of all the corners at point a: for corner c (running a -> b),
+  // the corner of another face at a that also runs a -> b (same direction:
+  // inconsistent faces) or the corner at b of another face running b -> a;
+  // NoTwin if none, NonManifoldEdge if several. A corner's own face has no
+  // other corner at a (faces have no repeated points), and the neighbouring
+  // points of the corners at a are read once per point, not once per corner.
+  void FindAround(Index a, Buffer<Index>& twins, Buffer<char>& sameDirection,
+    std::vector<std::pair<Index, Index>>& ring) const
   {
-    const Index a = this->Faces.Points[c], b = this->NextPoint(c);
-    Index found = NoTwin;
-    same = 0;
-    for (Index i = this->Around.Offsets[a];
-         i < this->Around.Offsets[a + 1] && found != NonManifoldEdge; ++i)
+    const Index first = this->Around.Offsets[a], last = this->Around.Offsets[a + 1];
+    ring.resize(last - first);
+    for (Index i = first; i < last; ++i)
     {
-      const Index d = this->Around.Corners[i]; // a corner of another face g at a
-      if (d >= first && d < last)
-      {
-        continue;
-      }
-      Index twin = NoTwin;
-      if (this->NextPoint(d) == b)
-      {
-        twin = d; // g also runs a -> b
-        same = 1;
-      }
-      else if (this->PreviousPoint(d) == b)
-      {
-        twin = this->Faces.Previous(d, this->CornerFace[d]); // g runs b -> a
-        same = 0;
-      }
-      if (twin != NoTwin)
-      {
-        found = (found == NoTwin) ? twin : NonManifoldEdge;
-      }
+      const Index d = this->Around.Corners[i];
+      ring[i - first] = { this->NextPoint(d), this->PreviousPoint(d) };
     }
-    return found;
+    for (Index i = first; i < last; ++i)
+    {
+      const Index b = ring[i - first].first;
+      Index found = NoTwin;
+      char same = 0;
+      for (Index j = first; j < last && found != NonManifoldEdge; ++j)
+      {
+        Index twin = NoTwin;
+        if (j == i)
+        {
+          continue;
+        }
+        if (ring[j - first].first == b)
+        {
+          twin = this->Around.Corners[j]; // it also runs a -> b
+          same = 1;
+        }
+        else if (ring[j - first].second == b)
+        {
+          const Index d = this->Around.Corners[j]; // it runs b -> a
+          twin = this->Faces.Previous(d, this->CornerFace[d]);
+          same = 0;
+        }
+        if (twin != NoTwin)
+        {
+          found = (found == NoTwin) ? twin : NonManifoldEdge;
+        }
+      }
+      const Index c = this->Around.Corners[i];
+      twins[c] = found;
+      sameDirection[c] = found >= 0 ? same : 0;
+    }
   }
 
 private:
@@ -292,19 +308,20 @@ void Circulate(const HalfedgeMesh& mesh, Index v, Visit&& visit)
 
 //------------------------------------------------------------------------------
 bool vtkOpenMeshNormalsTopology::Matches(
-  vtkPolyData* input, bool consistency, bool traversal, bool incremental) const
+  vtkPolyData* input, bool consistency, bool traversal, bool incremental, bool halfedgeMesh) const
 {
   vtkCellArray* polys = input->GetPolys();
   vtkCellArray* strips = input->GetStrips();
   return this->Valid && this->Polys == polys && this->PolysTime == polys->GetMTime() &&
     this->Strips == strips && this->StripsTime == strips->GetMTime() &&
     this->NumberOfPoints == input->GetNumberOfPoints() && this->Consistency == consistency &&
-    this->NonManifoldTraversal == traversal && this->Incremental == incremental;
+    this->NonManifoldTraversal == traversal && this->Incremental == incremental &&
+    this->AlwaysHalfedgeMesh == halfedgeMesh;
 }
 
 //------------------------------------------------------------------------------
 bool vtkOpenMeshNormalsTopology::Build(vtkPolyData* input, bool consistency, bool traversal,
-  bool incremental, vtkOpenMeshNormals* filter)
+  bool incremental, bool halfedgeMesh, vtkOpenMeshNormals* filter)
 {
   this->Valid = false;
   this->NonManifoldFaces = this->RepeatedPointFaces = this->DegenerateFaces = 0;
@@ -332,16 +349,21 @@ bool vtkOpenMeshNormalsTopology::Build(vtkPolyData* input, bool consistency, boo
     return false;
   }
   filter->UpdateProgress(0.4);
-  const Buffer<char> irregular = incremental
-    ? Buffer<char>(this->NumberOfFaces(), 1)
-    : this->FindIrregularFaces(around, twins, sameDirection);
-  filter->UpdateProgress(0.5);
-  if (!this->LoadMesh(around, twins, irregular, filter))
+  this->HasHalfedgeMesh =
+    incremental || halfedgeMesh || !this->ReadFansFromTwins(around, twins, sameDirection);
+  if (this->HasHalfedgeMesh)
   {
-    return false;
+    const Buffer<char> irregular = incremental
+      ? Buffer<char>(this->NumberOfFaces(), 1)
+      : this->FindIrregularFaces(around, twins, sameDirection);
+    filter->UpdateProgress(0.5);
+    if (!this->LoadMesh(around, twins, irregular, filter))
+    {
+      return false;
+    }
+    filter->UpdateProgress(0.6);
+    this->ReadFans();
   }
-  filter->UpdateProgress(0.6);
-  this->ReadFans();
   filter->UpdateProgress(0.7);
 
   this->Polys = input->GetPolys();
@@ -352,6 +374,7 @@ bool vtkOpenMeshNormalsTopology::Build(vtkPolyData* input, bool consistency, boo
   this->Consistency = consistency;
   this->NonManifoldTraversal = traversal;
   this->Incremental = incremental;
+  this->AlwaysHalfedgeMesh = halfedgeMesh;
   this->Valid = true;
   return true;
 }
@@ -549,18 +572,13 @@ vtkOpenMeshNormalsTopology::FindTwins(const PointCorners& around, Buffer<char>& 
   const TwinFinder finder(*this, around);
   Buffer<Index> twins(faces.Points.size()); // every entry written below
   sameDirection.resize(faces.Points.size());
-  vtkSMPTools::For(0, faces.Size(),
+  vtkSMPTools::For(0, around.NumberOfPoints(),
     [&](Index begin, Index end)
     {
-      for (Index f = begin; f < end; ++f)
+      std::vector<std::pair<Index, Index>> ring; // each corner's next and previous points
+      for (Index a = begin; a < end; ++a)
       {
-        const Index first = faces.Offsets[f], last = faces.Offsets[f + 1];
-        for (Index c = first; c < last; ++c)
-        {
-          char same;
-          twins[c] = finder.Find(c, first, last, same);
-          sameDirection[c] = twins[c] >= 0 ? same : 0;
-        }
+        finder.FindAround(a, twins, sameDirection, ring);
       }
     });
   return twins;

@@ -119,18 +119,21 @@ public:
    * strips (the same arrays, unmodified), for as many points, with the same
    * settings: then only the geometry needs computing.
    */
-  bool Matches(vtkPolyData* input, bool consistency, bool traversal, bool incremental) const;
+  bool Matches(vtkPolyData* input, bool consistency, bool traversal, bool incremental,
+    bool halfedgeMesh) const;
 
   /**
    * Builds everything from the input's polygons and strips. consistency:
    * orient each connected piece; traversal: cross non-manifold edges while
-   * orienting; incremental: load every face through OpenMesh's add_face.
+   * orienting; incremental: load every face through OpenMesh's add_face;
+   * halfedgeMesh: build OpenMesh's halfedge mesh also when every face is
+   * regular (else such a mesh gets its fans straight from the twins).
    * Reports progress (0.1 to 0.7) and errors through the filter; returns
    * false when the mesh is too large for 32-bit handles or the filter was
    * aborted.
    */
   bool Build(vtkPolyData* input, bool consistency, bool traversal, bool incremental,
-    vtkOpenMeshNormals* filter);
+    bool halfedgeMesh, vtkOpenMeshNormals* filter);
 
   Index NumberOfFaces() const { return this->Faces.Size(); }
 
@@ -147,10 +150,15 @@ public:
   Buffer<Index> PolyFace;       // each input polygon's face, -1 if degenerate
   Buffer<Index> StripFaces;     // the faces from triangle strips, in order
 
+  // OpenMesh's halfedge mesh, built where some face is irregular (or when
+  // asked for): then it holds the vertices' positions. A mesh of regular faces
+  // only skips it (HasHalfedgeMesh false) and keeps them in VertexPositions.
   HalfedgeMesh Mesh;
-  Buffer<Index> VertexPoint; // the input point of each OpenMesh vertex
-  Buffer<char> VertexIsCopy; // a copy made for a face OpenMesh refused
-  Buffer<Index> MeshFace;    // the face of each OpenMesh face (unless the identity)
+  bool HasHalfedgeMesh = false;
+  Buffer<double> VertexPositions; // x, y, z per vertex, without a halfedge mesh
+  Buffer<Index> VertexPoint;      // the input point of each OpenMesh vertex
+  Buffer<char> VertexIsCopy;      // a copy made for a face OpenMesh refused
+  Buffer<Index> MeshFace;         // the face of each OpenMesh face (unless the identity)
   bool MeshFaceIsIdentity = false;
 
   // The fan of each OpenMesh vertex in circulation order: corners, and
@@ -200,6 +208,16 @@ private:
   void ReadFans();
   void FillFan(Index vertex);
 
+  // Steps 4-5 without a halfedge mesh (in vtkOpenMeshNormalsDirectFans.cxx):
+  // the vertices, then each fan walked across the twins in the order
+  // OpenMesh's circulation would give. False, with nothing to keep, where
+  // some face is not regular (an edge not shared by two opposite faces, a
+  // point of several fans): such a mesh needs the halfedge mesh.
+  bool ReadFansFromTwins(
+    const PointCorners& around, const Buffer<Index>& twins, const Buffer<char>& sameDirection);
+  void NumberVerticesDirectly(const PointCorners& around);
+  bool FillFanFromTwins(Index vertex, const PointCorners& around, const Buffer<Index>& twins);
+
   // What the topology was built from.
   vtkCellArray* Polys = nullptr;
   vtkMTimeType PolysTime = 0;
@@ -209,6 +227,7 @@ private:
   bool Consistency = false;
   bool NonManifoldTraversal = false;
   bool Incremental = false;
+  bool AlwaysHalfedgeMesh = false;
   bool Valid = false;
 };
 

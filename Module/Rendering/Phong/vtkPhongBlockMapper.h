@@ -89,6 +89,7 @@ protected:
       this->Core->Options.DebugView = parent->GetDebugView();
       this->Core->Options.DebugLightIndex = parent->GetDebugLightIndex();
       this->Core->Options.Specialize = parent->GetShaderSpecialization();
+      this->Core->Options.LightCullingBound = parent->GetLightCullingBound();
     }
     return this->Core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
   }

@@ -193,6 +193,7 @@ void vtkPhongCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DebugView: " << this->DebugView << "\n";
   os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
+  os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
   os << indent << "NumberOfHelpers: " << this->GetNumberOfHelpers() << "\n";
   os << indent << "ShaderCompileCount: " << this->GetShaderCompileCount() << "\n";
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";

@@ -82,6 +82,15 @@ public:
 
   ///@{
   /**
+   * Light culling, as vtkPhongPolyDataMapper::SetLightCullingBound, over the whole actor's
+   * bounds. Default 0.5 / 255; range [0, 1e9]; 0 evaluates every light.
+   */
+  vtkSetClampMacro(LightCullingBound, double, 0.0, 1.0e9);
+  vtkGetMacro(LightCullingBound, double);
+  ///@}
+
+  ///@{
+  /**
    * Shader statistics summed over the helpers (one helper per kind of block: with or
    * without scalars, normals, texture coordinates), as vtkPhongPolyDataMapper reports them
    * for itself; and the lighting signature of the last variant a helper built (empty when
@@ -122,6 +131,7 @@ protected:
   int DebugView = vtkPhongPolyDataMapper::Final;
   int DebugLightIndex = 0;
   bool ShaderSpecialization = true;
+  double LightCullingBound = 0.5 / 255.0;
 
 private:
   vtkPhongCompositePolyDataMapper(const vtkPhongCompositePolyDataMapper&) = delete;

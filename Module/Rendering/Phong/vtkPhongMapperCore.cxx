@@ -50,6 +50,7 @@ struct vtkPhongMapperCore::Internals
   std::string ReportedProblems;
 
   int ShaderCompileCount = 0;
+  int CulledLights = 0;
   double LastShaderBuildTime = 0.0;
   std::string LastSignature;
   std::string LastVertexSource;
@@ -84,6 +85,7 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
   {
     plan = vtkPhongShaderBuilder::Plan();
   }
+  this->Internal->CulledLights = plan.CulledLights;
   auto& current = this->Internal->Plans[&cellBO];
   const bool changed = current.Signature != plan.Signature;
   current = std::move(plan);
@@ -457,6 +459,12 @@ int vtkPhongMapperCore::GetNumberOfShaderVariants() const
 double vtkPhongMapperCore::GetLastShaderBuildTime() const
 {
   return this->Internal->LastShaderBuildTime;
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongMapperCore::GetNumberOfCulledLights() const
+{
+  return this->Internal->CulledLights;
 }
 
 //------------------------------------------------------------------------------

@@ -132,6 +132,7 @@ public:
   int GetShaderCompileCount() const;
   int GetNumberOfShaderVariants() const;
   double GetLastShaderBuildTime() const;
+  int GetNumberOfCulledLights() const; ///< by the last planned primitive
   const std::string& GetLastShaderSignature() const;
   const std::string& GetLastVertexShaderSource() const;
   const std::string& GetLastFragmentShaderSource() const;

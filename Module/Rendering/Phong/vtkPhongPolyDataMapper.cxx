@@ -6,14 +6,19 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPhongValidBlocks.h"
 #include "vtkPhongClampedSetter.h"
+#include "vtkPhongDepthPrePass.h"
 #include "vtkPhongMapperCore.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
+#include "vtk_glew.h"
 
 vtkStandardNewMacro(vtkPhongPolyDataMapper);
 
@@ -37,6 +42,18 @@ vtkPhongPolyDataMapper::vtkPhongPolyDataMapper()
 
 //------------------------------------------------------------------------------
 vtkPhongPolyDataMapper::~vtkPhongPolyDataMapper() = default;
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::SetLightCullingBound(double bound)
+{
+  vtkPhongSetClamped(this, "LightCullingBound", this->LightCullingBound, bound, 0.0, 1.0e9);
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongPolyDataMapper::GetNumberOfCulledLights()
+{
+  return this->Internal->Core->GetNumberOfCulledLights();
+}
 
 //------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::SetNormalsFeatureAngle(double angle)
@@ -176,6 +193,7 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
   core->Options.DebugView = this->DebugView;
   core->Options.DebugLightIndex = this->DebugLightIndex;
   core->Options.Specialize = this->ShaderSpecialization;
+  core->Options.LightCullingBound = this->LightCullingBound;
   core->MaximumNumberOfPrograms = this->MaximumNumberOfShaderPrograms;
   return core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
 }
@@ -306,6 +324,49 @@ void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
+// With the depth pre-pass, the first draw writes depth only; the second, with the same
+// program (so the same depths) and VTK's GL_LEQUAL test, shades only the nearest surface.
+void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
+{
+  this->UsedDepthPrePass = this->WantsDepthPrePass(ren, act);
+  if (!this->UsedDepthPrePass)
+  {
+    this->Superclass::RenderPieceDraw(ren, act);
+    return;
+  }
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  {
+    vtkOpenGLState::ScopedglColorMask colorMask(state);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    this->Superclass::RenderPieceDraw(ren, act);
+  }
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+  state->vtkglDepthFunc(GL_LEQUAL);
+  this->Superclass::RenderPieceDraw(ren, act);
+}
+
+//------------------------------------------------------------------------------
+// Only opaque lit surfaces without edges or vertices drawn over them (VTK offsets those
+// against the surface's depth, which the pre-pass already holds), outside selection;
+// Automatic decides from the work the mapper knows of (docs/results/performance.md,
+// "Depth complexity").
+bool vtkPhongPolyDataMapper::WantsDepthPrePass(vtkRenderer* ren, vtkActor* act)
+{
+  if (this->DepthPrePass == DepthPrePassOff || act->IsRenderingTranslucentPolygonalGeometry() ||
+    ren->GetSelector() || !act->GetProperty()->GetLighting() ||
+    act->GetProperty()->GetOpacity() < 1.0 || act->GetProperty()->GetEdgeVisibility() ||
+    act->GetProperty()->GetVertexVisibility() || !ren->GetRenderWindow())
+  {
+    return false;
+  }
+  if (this->DepthPrePass == DepthPrePassOn)
+  {
+    return true;
+  }
+  return vtkPhongDepthPrePassPays(ren, this->CurrentInput, this->GetNumberOfCulledLights());
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::RenderPieceFinish(ren, act);
@@ -332,6 +393,9 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalsSplitting: " << (this->NormalsSplitting ? "On" : "Off") << "\n";
   os << indent << "UsedGeneratedNormals: " << (this->UsedGeneratedNormals ? "yes" : "no") << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
+  os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
+  os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
+  os << indent << "UsedDepthPrePass: " << (this->UsedDepthPrePass ? "yes" : "no") << "\n";
   os << indent << "MaximumNumberOfShaderPrograms: " << this->MaximumNumberOfShaderPrograms << "\n";
   os << indent << "Lighting:\n";
   this->Internal->Core->PrintSelf(os, indent.GetNextIndent());
@@ -349,6 +413,8 @@ void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
     this->SetNormalsFeatureAngle(phong->GetNormalsFeatureAngle());
     this->SetNormalsSplitting(phong->GetNormalsSplitting());
     this->SetShaderSpecialization(phong->GetShaderSpecialization());
+    this->SetLightCullingBound(phong->GetLightCullingBound());
+    this->SetDepthPrePass(phong->GetDepthPrePass());
     this->SetMaximumNumberOfShaderPrograms(phong->GetMaximumNumberOfShaderPrograms());
   }
   this->Superclass::ShallowCopy(mapper);

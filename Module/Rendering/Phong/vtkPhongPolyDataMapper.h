@@ -156,6 +156,48 @@ public:
 
   ///@{
   /**
+   * Light culling. A point or spot light is left out of this actor's shader when the colour
+   * it could add anywhere in the actor's bounds, with the actor's materials, is small: the
+   * lights left out add at most LightCullingBound together, per channel (linear colour,
+   * before clamping), so the picture differs from the unculled one by at most that much
+   * (docs/lighting-model.md, "Light culling"). Default 0.5 / 255 (half an 8-bit level),
+   * range [0, 1e9]; 0 evaluates every light. Only in the final view (debug views keep every
+   * light). NumberOfCulledLights: how many lights the last planned primitive left out.
+   * Culling changes the light counts of the variant: each culled set is its own cached
+   * program, so a light that moves in and out of reach switches between two compiled
+   * programs.
+   */
+  virtual void SetLightCullingBound(double bound); ///< NaN is refused with an error
+  vtkGetMacro(LightCullingBound, double);
+  int GetNumberOfCulledLights();
+  ///@}
+
+  enum DepthPrePassModes
+  {
+    DepthPrePassOff = 0,
+    DepthPrePassOn = 1,
+    DepthPrePassAutomatic = 2
+  };
+
+  ///@{
+  /**
+   * Depth pre-pass: draw the opaque geometry once with colour writes off (depth only), then
+   * again with the lighting, so that with the depth test (VTK's GL_LEQUAL) only the nearest
+   * surface of each pixel is shaded however many layers lie behind it. Off (the default), On,
+   * or Automatic: on from 4 evaluated lights. It pays only where surfaces are drawn behind
+   * others (nested or folded surfaces drawn back to front: 0.56-0.69x under 8 lights on
+   * llvmpipe); on a single convex surface the depth-only draw costs nearly a lit one (up to
+   * 1.9x), hence not the default (docs/results/performance.md, "Depth complexity"). Never
+   * in translucent passes (depth peeling included), hardware selection (picking), for
+   * unlit actors or with edges or vertices shown. UsedDepthPrePass: whether the last draw used it.
+   */
+  vtkSetClampMacro(DepthPrePass, int, DepthPrePassOff, DepthPrePassAutomatic);
+  vtkGetMacro(DepthPrePass, int);
+  vtkGetMacro(UsedDepthPrePass, bool);
+  ///@}
+
+  ///@{
+  /**
    * Shader statistics since the mapper was created (or last released its graphics resources).
    * ShaderCompileCount: how many times the mapper asked the render window for a program
    * whose source it had not used before; each costs a compile and link unless another mapper
@@ -224,6 +266,8 @@ protected:
   void ComputeBounds() override;
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+  bool WantsDepthPrePass(vtkRenderer* ren, vtkActor* act);
 
   int DebugView = Final;
   int DebugLightIndex = 0;
@@ -233,6 +277,9 @@ protected:
   bool NormalsSplitting = true;
   bool UsedGeneratedNormals = false;
   bool ShaderSpecialization = true;
+  double LightCullingBound = 0.5 / 255.0;
+  int DepthPrePass = DepthPrePassOff;
+  bool UsedDepthPrePass = false;
   int MaximumNumberOfShaderPrograms = 32;
 
 private:

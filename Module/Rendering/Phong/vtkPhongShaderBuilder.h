@@ -85,6 +85,9 @@ public:
     /// false: the all-features variant (every optional term and light kind) instead of the
     /// shader the scene needs, for measuring what specialization buys
     bool Specialize = true;
+    /// positional lights may be left out of an actor while the colour they could add there
+    /// stays within this bound (vtkPhongLightCulling); 0 keeps every light
+    double LightCullingBound = 0.5 / 255.0;
   };
 
   /**
@@ -102,7 +105,8 @@ public:
     vtkProperty* FrontMaterial = nullptr;
     vtkProperty* BackMaterial = nullptr; ///< the front material when there is no back one
     int DebugView = 0;                   ///< a vtkPhongPolyDataMapper::DebugViews value
-    int ShadowFactorCount = 0; ///< vtkShadowMapPass's factors in the shader (one per light)
+    int ShadowFactorCount = 0;           ///< vtkShadowMapPass's factors (one per light)
+    int CulledLights = 0;                ///< positional lights left out (vtkPhongLightCulling)
     bool Has(vtkPhongFeature feature) const { return this->Features.Has(feature); }
   };
 

@@ -7,6 +7,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightingMapPass.h"
+#include "vtkPhongLightCulling.h"
 #include "vtkPhongMaterialUniforms.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProblemLog.h"
@@ -107,6 +108,11 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   plan.FrontMaterial = front;
   plan.BackMaterial =
     (twoSided && actor->GetBackfaceProperty()) ? actor->GetBackfaceProperty() : front;
+  if (options.DebugView == View::Final)
+  {
+    plan.CulledLights = vtkPhongLightCulling::Cull(ren, actor, plan.FrontMaterial,
+      plan.BackMaterial, options.LightCullingBound, plan.PointLights, plan.SpotLights);
+  }
 
   const bool allFeatures = !options.Specialize;
   if (allFeatures)

@@ -1,0 +1,178 @@
+// Light culling keeps its bound. Four spheres, each with 16 of the scene's 64 point lights
+// (inverse-square attenuation) close in front of it: each sphere is reached by a few lights
+// only. Rendered into float targets with the default
+// culling bound (0.5 / 255) and with culling off (0), the two pictures differ by at most the
+// bound in every channel of every pixel; each mapper evaluates only a few of the 64 lights.
+// A spot aimed away from every sphere is culled by its cone.
+// Culling with a bound of 1 drops some of each sphere's own lights: it differs by more
+// than 0.5 / 255 (so the comparison would see a broken bound), but within 1. A frame rendered
+// again, or with a far light moved a little, compiles nothing; a zero bound culls nothing.
+
+#include "vtkPhongReferenceTesting.h"
+
+#include "vtkCamera.h"
+#include "vtkMath.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr double DefaultBound = 0.5 / 255.0;
+
+// The largest difference of the RGB channels of two float pictures.
+double LargestDifference(vtkImageData* a, vtkImageData* b)
+{
+  vtkDataArray* ra = a->GetPointData()->GetScalars();
+  vtkDataArray* rb = b->GetPointData()->GetScalars();
+  double largest = 0.0;
+  for (vtkIdType p = 0; p < ra->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      largest = std::max(largest, std::abs(ra->GetComponent(p, c) - rb->GetComponent(p, c)));
+    }
+  }
+  return largest;
+}
+
+struct CullingScene
+{
+  static constexpr double Spacing = 30.0;
+  static constexpr double Intensity = 0.03;
+  vtkPhongTest::Scene View{ 320, 320 };
+  std::vector<vtkPhongPolyDataMapper*> Mappers;
+  std::vector<vtkLight*> Lights;
+
+  CullingScene()
+  {
+    this->View.Renderer->AutomaticLightCreationOff();
+    vtkNew<vtkPhongProperty> material;
+    material->SetAmbient(0.1);
+    material->SetDiffuse(0.8);
+    material->SetSpecular(0.4);
+    material->SetShininess(20.0);
+    const double white[3] = { 1.0, 1.0, 1.0 };
+    for (int i = 0; i < 4; ++i)
+    {
+      // Spheres of radius 1.5 on a 2 x 2 grid, Spacing apart.
+      const double center[3] = { (i % 2 - 0.5) * Spacing, (i / 2 - 0.5) * Spacing, 0.0 };
+      vtkActor* actor =
+        vtkPhongTest::AddActor(this->View, vtkPhongTest::MakeSphere(48, 1.5), material);
+      actor->SetPosition(center[0], center[1], center[2]);
+      this->Mappers.push_back(vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper()));
+      // 16 point lights close in front of each: two rings 0.3 off the surface.
+      for (int k = 0; k < 16; ++k)
+      {
+        const double azimuth = 2.0 * vtkMath::Pi() * (k % 8) / 8.0;
+        const double polar = vtkMath::RadiansFromDegrees(k < 8 ? 35.0 : 70.0);
+        const double r = 1.8;
+        const double position[3] = { center[0] + r * std::sin(polar) * std::cos(azimuth),
+          center[1] + r * std::sin(polar) * std::sin(azimuth), r * std::cos(polar) };
+        vtkLight* light = vtkPhongTest::AddLight(this->View, position, center, white, true);
+        light->SetIntensity(Intensity);
+        light->SetAttenuationValues(0.0, 0.0, 1.0);
+        this->Lights.push_back(light);
+      }
+    }
+    vtkCamera* camera = this->View.Renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(0.0, 0.0, 2.2 * Spacing);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetViewAngle(30.0);
+    this->View.Renderer->ResetCameraClippingRange();
+  }
+
+  vtkSmartPointer<vtkImageData> Render(double bound)
+  {
+    for (vtkPhongPolyDataMapper* mapper : this->Mappers)
+    {
+      mapper->SetLightCullingBound(bound);
+    }
+    return vtkPhongTest::RenderFloat(this->View, this->Pass);
+  }
+
+  int CompileCount()
+  {
+    int count = 0;
+    for (vtkPhongPolyDataMapper* mapper : this->Mappers)
+    {
+      count += mapper->GetShaderCompileCount();
+    }
+    return count;
+  }
+
+  vtkNew<vtkPhongFloatRenderPass> Pass;
+};
+}
+
+int TestPhongLightCulling(int, char*[])
+{
+  vtkPhongTest::Checks checks;
+  CullingScene scene;
+
+  const auto all = scene.Render(0.0);
+  for (vtkPhongPolyDataMapper* mapper : scene.Mappers)
+  {
+    checks.Expect(mapper->GetNumberOfCulledLights() == 0, "bound 0: no light culled");
+  }
+  checks.Expect(vtkPhongTest::LargestValue(all) > 0.2, "the spheres are lit");
+
+  const auto culled = scene.Render(DefaultBound);
+  for (size_t i = 0; i < scene.Mappers.size(); ++i)
+  {
+    const int evaluated = 64 - scene.Mappers[i]->GetNumberOfCulledLights();
+    std::cout << "sphere " << i << ": " << evaluated << " of 64 lights evaluated\n";
+    checks.Expect(evaluated >= 1 && evaluated <= 16,
+      "sphere " + std::to_string(i) + ": a few lights evaluated (" + std::to_string(evaluated) +
+        " of 64)");
+  }
+  const double difference = LargestDifference(all, culled);
+  std::cout << "largest difference, default bound: " << difference << " (bound " << DefaultBound
+            << ")\n";
+  // Float rounding of the sums that remain: a few ulps of values near 1.
+  checks.Expect(difference <= DefaultBound + 1.0e-6,
+    "culled within 0.5/255 of unculled (" + std::to_string(difference) + ")");
+
+  // A bound of 1 culls some of each sphere's own lights: the comparison sees that.
+  const auto coarse = scene.Render(1.0);
+  const double coarseDifference = LargestDifference(all, coarse);
+  std::cout << "largest difference, bound 1: " << coarseDifference << "\n";
+  checks.Expect(coarseDifference > DefaultBound && coarseDifference <= 1.0 + 1.0e-6,
+    "bound 1: differs by more than 0.5/255, within 1 (" + std::to_string(coarseDifference) + ")");
+
+  { // A spot without attenuation in front of sphere 0, pointing away from every sphere:
+    // only its cone can cull it, and does, for every sphere.
+    const double position[3] = { -0.5 * CullingScene::Spacing, -0.5 * CullingScene::Spacing, 3.0 };
+    const double focal[3] = { position[0], position[1], 10.0 };
+    const double white[3] = { 1.0, 1.0, 1.0 };
+    vtkLight* spot = vtkPhongTest::AddLight(scene.View, position, focal, white, true);
+    spot->SetConeAngle(30.0);
+    const auto withSpot = scene.Render(0.0);
+    const auto withSpotCulled = scene.Render(DefaultBound);
+    bool allCulled = true;
+    for (vtkPhongPolyDataMapper* mapper : scene.Mappers)
+    {
+      allCulled = allCulled && mapper->GetNumberOfCulledLights() == 49;
+    }
+    checks.Expect(allCulled, "a spot aimed away from every sphere is culled by its cone");
+    checks.Expect(LargestDifference(withSpot, withSpotCulled) <= DefaultBound + 1.0e-6,
+      "with the spot: culled within 0.5/255 of unculled");
+    scene.View.Renderer->RemoveLight(spot);
+  }
+
+  // The variant cache: the same frame again, and a far light moved a little, compile nothing.
+  scene.Render(DefaultBound);
+  const int compiled = scene.CompileCount();
+  scene.Render(DefaultBound);
+  double position[3];
+  scene.Lights[5]->GetPosition(position);
+  scene.Lights[5]->SetPosition(position[0], position[1] + 0.01, position[2]);
+  scene.Render(DefaultBound);
+  checks.Expect(scene.CompileCount() == compiled,
+    "re-rendering and moving a light a little compile nothing (" +
+      std::to_string(scene.CompileCount() - compiled) + " compiles)");
+  return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
+}
