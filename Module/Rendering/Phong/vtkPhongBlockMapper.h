@@ -31,7 +31,6 @@
 #include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongCompatibility.h"
 #include "vtkPhongMapperCore.h"
-#include "vtkPhongValidBlocks.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkShaderProperty.h"
@@ -151,14 +150,14 @@ protected:
   }
 
   // VTK's upload reads the block's points through its cell ids unchecked: a block with cells
-  // naming missing points is uploaded from its collapsed copy (the composite mapper reports
-  // it, with its bounds).
+  // naming missing points is uploaded from its collapsed copy, which the composite mapper
+  // keeps (and has already made for its bounds).
 #if VTKPHONG_VTK_9_3
   void AppendOneBufferObject(vtkRenderer* ren, vtkActor* act,
     typename BlockMapper::GLBatchElement* element, vtkIdType& offset,
     std::vector<unsigned char>& colors, std::vector<float>& norms) override
   {
-    ValidBlockScope scope(element->Parent.PolyData, this->ValidBlocks);
+    ValidBlockScope scope(element->Parent.PolyData, this->ValidBlock(element->Parent.PolyData));
     this->Superclass::AppendOneBufferObject(ren, act, element, offset, colors, norms);
   }
 #else
@@ -166,19 +165,26 @@ protected:
     vtkCompositeMapperHelperData* element, vtkIdType& offset, std::vector<unsigned char>& colors,
     std::vector<float>& norms) override
   {
-    ValidBlockScope scope(element->Data, this->ValidBlocks);
+    ValidBlockScope scope(element->Data, this->ValidBlock(element->Data));
     this->Superclass::AppendOneBufferObject(ren, act, element, offset, colors, norms);
   }
 #endif
 
-  // Points a block pointer at the block's valid copy for as long as it lives.
+  vtkPolyData* ValidBlock(vtkPolyData* block)
+  {
+    auto* parent = vtkPhongCompositePolyDataMapper::SafeDownCast(this->Parent);
+    return parent ? parent->GetValidBlock(block) : block;
+  }
+
+  // Points a block pointer at another polydata (the block's valid copy) for as long as it
+  // lives.
   struct ValidBlockScope
   {
-    ValidBlockScope(vtkPolyData*& block, vtkPhongValidBlocks& blocks)
+    ValidBlockScope(vtkPolyData*& block, vtkPolyData* valid)
       : Block(block)
       , Original(block)
     {
-      block = blocks.Get(block, nullptr);
+      block = valid;
     }
     ~ValidBlockScope() { this->Block = this->Original; }
     ValidBlockScope(const ValidBlockScope&) = delete;
@@ -197,7 +203,6 @@ protected:
   vtkObject* Reporter() { return this->Parent ? static_cast<vtkObject*>(this->Parent) : this; }
 
   vtkNew<vtkPhongMapperCore> Core;
-  vtkPhongValidBlocks ValidBlocks;
 
 private:
   vtkPhongBlockMapper(const vtkPhongBlockMapper&) = delete;

@@ -36,7 +36,8 @@ struct vtkPhongCompositePolyDataMapper::Internals
   // longer needs (and, on VTK 9.3, keeps them out of reach): their entries then expire.
   std::vector<std::pair<vtkWeakPointer<vtkObject>, vtkPhongMapperCore*>> Helpers;
   std::string LastSignature;
-  // The leaves as the bounds see them: collapsed copies of those with invalid cells.
+  // The leaves as the bounds and the block mappers see them: collapsed copies of those with
+  // invalid cells.
   vtkPhongValidBlocks ValidBlocks;
 
   void Add(vtkObject* helper, vtkPhongMapperCore* core)
@@ -150,6 +151,12 @@ void vtkPhongCompositePolyDataMapper::ComputeBounds()
     vtkMath::UninitializeBounds(this->Bounds);
   }
   this->BoundsMTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkPhongCompositePolyDataMapper::GetValidBlock(vtkPolyData* block)
+{
+  return this->Internal->ValidBlocks.Get(block, this);
 }
 
 //------------------------------------------------------------------------------

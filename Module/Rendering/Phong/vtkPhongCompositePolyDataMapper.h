@@ -106,6 +106,15 @@ public:
    */
   int GetNumberOfHelpers();
 
+#ifndef __VTK_WRAP__
+  /**
+   * What the block mappers draw for `block`: the block itself, or its copy with the cells
+   * that name missing points collapsed (made once per modification of the block, reported
+   * once). The bounds use the same copies.
+   */
+  vtkPolyData* GetValidBlock(vtkPolyData* block);
+#endif
+
 protected:
   vtkPhongCompositePolyDataMapper();
   ~vtkPhongCompositePolyDataMapper() override;
