@@ -242,6 +242,45 @@ void ShaderSection(const char* meshFile, bool quick)
     "%-34s %10.1f ms %9.1f ms\n", "steady frame", 1e3 * steadyFrame[0], 1e3 * steadyFrame[1]);
 }
 
+// Groups of actors drawn in turn, batch after batch, so every group sees the same machine
+// state; every shader is built before timing. The median frame time of each group.
+std::vector<double> RunGroups(vtkRenderWindow* window,
+  const std::vector<std::vector<vtkActor*>>& groups, int batches, int frames)
+{
+  auto show = [&](size_t which)
+  {
+    for (size_t g = 0; g < groups.size(); ++g)
+    {
+      for (vtkActor* actor : groups[g])
+      {
+        actor->SetVisibility(g == which);
+      }
+    }
+  };
+  std::vector<std::vector<double>> times(groups.size());
+  for (size_t which = 0; which < groups.size(); ++which) // build every shader first
+  {
+    show(which);
+    window->Render();
+    window->WaitForCompletion();
+  }
+  const FrameTimer timer{ window, frames };
+  for (int batch = 0; batch < batches; ++batch)
+  {
+    for (size_t which = 0; which < groups.size(); ++which)
+    {
+      show(which);
+      times[which].push_back(timer.Batch());
+    }
+  }
+  std::vector<double> medians;
+  for (const auto& series : times)
+  {
+    medians.push_back(Median(series));
+  }
+  return medians;
+}
+
 // One window, the same geometry drawn by each contender in turn, batch after
 // batch, so every contender sees the same machine state. Medians over batches.
 struct Contest
@@ -254,35 +293,12 @@ struct Contest
 
   std::vector<double> Run()
   {
-    auto show = [&](size_t which)
+    std::vector<std::vector<vtkActor*>> groups;
+    for (vtkActor* actor : this->Actors)
     {
-      for (size_t i = 0; i < this->Actors.size(); ++i)
-      {
-        this->Actors[i]->SetVisibility(i == which);
-      }
-    };
-    for (size_t which = 0; which < this->Actors.size(); ++which) // build every shader first
-    {
-      show(which);
-      this->Window->Render();
-      this->Window->WaitForCompletion();
+      groups.push_back({ actor });
     }
-    std::vector<std::vector<double>> times(this->Actors.size());
-    const FrameTimer timer{ this->Window, this->Frames };
-    for (int batch = 0; batch < this->Batches; ++batch)
-    {
-      for (size_t which = 0; which < this->Actors.size(); ++which)
-      {
-        show(which);
-        times[which].push_back(timer.Batch());
-      }
-    }
-    std::vector<double> medians;
-    for (const auto& series : times)
-    {
-      medians.push_back(Median(series));
-    }
-    return medians;
+    return RunGroups(this->Window, groups, this->Batches, this->Frames);
   }
 };
 
@@ -705,44 +721,6 @@ void ShellSection(bool quick)
       std::fflush(stdout);
     }
   }
-}
-
-// Groups of actors drawn in turn, batch after batch (Contest for several actors each).
-std::vector<double> RunGroups(vtkRenderWindow* window,
-  const std::vector<std::vector<vtkActor*>>& groups, int batches, int frames)
-{
-  auto show = [&](size_t which)
-  {
-    for (size_t g = 0; g < groups.size(); ++g)
-    {
-      for (vtkActor* actor : groups[g])
-      {
-        actor->SetVisibility(g == which);
-      }
-    }
-  };
-  std::vector<std::vector<double>> times(groups.size());
-  for (size_t which = 0; which < groups.size(); ++which) // build every shader first
-  {
-    show(which);
-    window->Render();
-    window->WaitForCompletion();
-  }
-  const FrameTimer timer{ window, frames };
-  for (int batch = 0; batch < batches; ++batch)
-  {
-    for (size_t which = 0; which < groups.size(); ++which)
-    {
-      show(which);
-      times[which].push_back(timer.Batch());
-    }
-  }
-  std::vector<double> medians;
-  for (const auto& series : times)
-  {
-    medians.push_back(Median(series));
-  }
-  return medians;
 }
 
 // Light culling: four spheres on a 2 x 2 grid, each with 16 of 64 point lights close in
