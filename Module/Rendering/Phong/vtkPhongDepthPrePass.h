@@ -1,25 +1,99 @@
 /**
- * @file   vtkPhongDepthPrePass.h
- * @brief  when vtkPhongPolyDataMapper's automatic depth pre-pass pays (private)
+ * @class   vtkPhongDepthPrePass
+ * @brief   when vtkPhongPolyDataMapper's automatic depth pre-pass pays (private)
  *
- * The pre-pass draws the geometry a second time (depth only) so that the lit draw shades
- * each pixel once. It saves the lighting of every hidden layer; on llvmpipe its
- * colour-masked draw costs nearly a lit one, so it pays only with hidden layers to save.
- * The break-even was measured on llvmpipe (docs/results/performance.md, "Depth
- * complexity").
+ * The pre-pass draws the geometry once with a program that computes no light (colour writes
+ * off), so that the lit draw that follows, with VTK's GL_LEQUAL test, shades each pixel once.
+ * It saves the lighting of every hidden layer and costs about one unlit draw. Whether that
+ * pays depends on how many of the fragments a plain draw would shade end up hidden, which
+ * only the GPU knows: this class counts them (GL_SAMPLES_PASSED queries around the draws).
+ *
+ * - A plain draw counts the fragments it shades (Shaded).
+ * - A draw with the pre-pass counts the fragments the depth pass lets through, which are the
+ *   ones a plain draw would have shaded in the same order (Shaded), and the fragments the lit
+ *   draw shades (Visible).
+ *
+ * Automatic mode draws plainly first, then probes one frame with the pre-pass and keeps it
+ * while the lighting of the hidden fragments (Shaded - Visible) costs more than the depth
+ * pass over the geometry, under the lights the lit program evaluates (Pays(); the cost model
+ * was measured on llvmpipe, docs/results/performance.md, "Depth complexity"). Off,
+ * it probes again when the count of shaded fragments moves by a quarter (the view or the
+ * data changed) or after ReprobeInterval frames.
+ *
+ * Counts arrive a frame late (the query results are read when available, never waited for).
+ * Counting is skipped while another GL_SAMPLES_PASSED query is running (VTK's depth peeling).
  */
 
 #ifndef vtkPhongDepthPrePass_h
 #define vtkPhongDepthPrePass_h
 
-class vtkPolyData;
-class vtkRenderer;
+class vtkWindow;
 
-/**
- * Whether the automatic mode uses the pre-pass for this input under the renderer's lights
- * (culledLights of them left out by light culling).
- */
-bool vtkPhongDepthPrePassPays(vtkRenderer* ren, vtkPolyData* input, int culledLights);
+class vtkPhongDepthPrePass
+{
+public:
+  vtkPhongDepthPrePass() = default;
+  ~vtkPhongDepthPrePass();
+  vtkPhongDepthPrePass(const vtkPhongDepthPrePass&) = delete;
+  vtkPhongDepthPrePass& operator=(const vtkPhongDepthPrePass&) = delete;
+
+  /**
+   * Whether the automatic mode draws this frame with the pre-pass, given the lights the lit
+   * program evaluates per fragment and the triangles drawn. Call with a current context,
+   * once per draw.
+   */
+  bool Decide(int evaluatedLights, double triangles, vtkWindow* window);
+
+  /**
+   * The break-even: whether the pre-pass pays for a draw whose plain version shades `shaded`
+   * fragments of which `visible` remain with the pre-pass, of `triangles` triangles, under
+   * `evaluatedLights` lights (the cost model is in vtkPhongDepthPrePass.cxx).
+   */
+  static bool Pays(double shaded, double visible, double triangles, int evaluatedLights);
+
+  ///@{
+  /**
+   * Count the fragments of the draw between Begin and End: the plain draw or the depth pass
+   * (Shaded), or the lit draw after the depth pass (Visible).
+   */
+  enum Count
+  {
+    Shaded = 0,
+    Visible = 1
+  };
+  void BeginCount(Count count);
+  void EndCount();
+  ///@}
+
+  /**
+   * Shaded / Visible at the last probe: how many fragments a plain draw shades per pixel it
+   * shows. 0 before the first probe.
+   */
+  double GetDepthComplexity() const;
+
+  /**
+   * Delete the queries (their context is current or about to go).
+   */
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+  /// Frames drawn without the pre-pass before it is probed again.
+  static constexpr int ReprobeInterval = 64;
+
+private:
+  void CollectCounts();
+  void Reset();
+
+  unsigned int Queries[2] = { 0, 0 };
+  vtkWindow* Window = nullptr;
+  bool Started[2] = { false, false }; // a count was started this frame and not read yet
+  int Running = -1;                   // the count running between Begin and End
+  bool LastWithPrePass = false;
+  bool Probed = false;
+  double ShadedCount = 0.0;  // from the latest frame
+  double VisibleCount = 0.0; // from the latest frame with the pre-pass
+  double ShadedAtProbe = 0.0;
+  int FramesSinceProbe = 0;
+};
 
 #endif
 // VTK-HeaderTest-Exclude: vtkPhongDepthPrePass.h

@@ -239,7 +239,8 @@ bool vtkPhongMapperCore::EndUpdateShaders(
   Internals& internal = *this->Internal;
   const bool built = internal.BuiltShaders;
   const bool failed = built && this->CheckNewProgram(cellBO, reporter);
-  if (!failed && internal.Plans[&cellBO].Handled)
+  const vtkPhongShaderBuilder::Plan& plan = internal.Plans[&cellBO];
+  if (!failed && plan.Handled && !plan.DepthOnly) // the pre-pass's one program is not counted
   {
     this->UseProgram(cellBO.Program, ren);
   }
@@ -310,14 +311,16 @@ bool vtkPhongMapperCore::CheckNewProgram(vtkOpenGLHelper& cellBO, vtkObject* rep
   const std::chrono::duration<double> elapsed =
     std::chrono::steady_clock::now() - internal.UpdateStart;
 
+  // The depth pre-pass's program (once per mapper) is neither a lighting variant nor counted
+  // as a build: the statistics follow the lighting.
   const vtkPhongShaderBuilder::Plan& plan = internal.Plans[&cellBO];
-  if (plan.Handled)
+  if (plan.Handled && !plan.DepthOnly)
   {
     internal.Signatures.insert(plan.Signature);
   }
   const std::size_t sourceHash = HashSources(
     internal.LastVertexSource, internal.LastGeometrySource, internal.LastFragmentSource);
-  if (internal.KnownSources.insert(sourceHash).second)
+  if (internal.KnownSources.insert(sourceHash).second && !plan.DepthOnly)
   {
     ++internal.ShaderCompileCount;
     internal.LastShaderBuildTime = elapsed.count();

@@ -2,17 +2,20 @@
 
 #include "vtkActor.h"
 #include "vtkCellData.h"
+#include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
-#include "vtkPhongValidBlocks.h"
 #include "vtkPhongClampedSetter.h"
 #include "vtkPhongDepthPrePass.h"
 #include "vtkPhongMapperCore.h"
+#include "vtkPhongShaderPlanner.h"
+#include "vtkPhongValidBlocks.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -32,6 +35,9 @@ struct vtkPhongPolyDataMapper::Internals
   vtkPhongValidBlocks ValidInputs;
   // The input drawn before the normals filter replaced it (see StockNeedToRebuildShaders).
   vtkPolyData* InputWithoutNormals = nullptr;
+  // The depth pass of the pre-pass is being drawn (its program computes no light).
+  bool DrawingDepthOnly = false;
+  vtkPhongDepthPrePass PrePass;
 };
 
 //------------------------------------------------------------------------------
@@ -194,6 +200,7 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
   core->Options.DebugLightIndex = this->DebugLightIndex;
   core->Options.Specialize = this->ShaderSpecialization;
   core->Options.LightCullingBound = this->LightCullingBound;
+  core->Options.DepthOnly = this->Internal->DrawingDepthOnly;
   core->MaximumNumberOfPrograms = this->MaximumNumberOfShaderPrograms;
   return core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
 }
@@ -324,46 +331,121 @@ void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
-// With the depth pre-pass, the first draw writes depth only; the second, with the same
-// program (so the same depths) and VTK's GL_LEQUAL test, shades only the nearest surface.
+// Automatic counts the fragments of its draws (vtkPhongDepthPrePass) to decide.
 void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
-  this->UsedDepthPrePass = this->WantsDepthPrePass(ren, act);
-  if (!this->UsedDepthPrePass)
+  vtkPhongDepthPrePass& prePass = this->Internal->PrePass;
+  const bool possible = this->DepthPrePass != DepthPrePassOff && this->CanUseDepthPrePass(ren, act);
+  const bool counting = possible && this->DepthPrePass == DepthPrePassAutomatic &&
+    this->CanMeasureDepthPrePass(ren, act);
+  const int evaluatedLights =
+    static_cast<int>(vtkPhongShaderPlanner::SwitchedOnLights(ren).size()) -
+    this->GetNumberOfCulledLights();
+  this->UsedDepthPrePass = possible &&
+    (this->DepthPrePass == DepthPrePassOn ||
+      (counting &&
+        prePass.Decide(evaluatedLights,
+          static_cast<double>(
+            this->CurrentInput->GetNumberOfPolys() + this->CurrentInput->GetNumberOfStrips()),
+          ren->GetRenderWindow())));
+  if (this->UsedDepthPrePass)
   {
-    this->Superclass::RenderPieceDraw(ren, act);
+    this->RenderPieceDrawWithDepthPrePass(ren, act, counting);
     return;
   }
+  if (counting)
+  {
+    prePass.BeginCount(vtkPhongDepthPrePass::Shaded);
+  }
+  this->Superclass::RenderPieceDraw(ren, act);
+  if (counting)
+  {
+    prePass.EndCount();
+  }
+}
+
+//------------------------------------------------------------------------------
+// The depth pass draws every primitive with a program that computes no light and writes no
+// colour; the lit draw, with the same vertex shader (so the same depths) and VTK's GL_LEQUAL
+// test, then shades only the nearest surface of each pixel.
+void vtkPhongPolyDataMapper::RenderPieceDrawWithDepthPrePass(
+  vtkRenderer* ren, vtkActor* act, bool counting)
+{
+  vtkPhongDepthPrePass& prePass = this->Internal->PrePass;
   vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
   {
     vtkOpenGLState::ScopedglColorMask colorMask(state);
     state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    this->Internal->DrawingDepthOnly = true;
+    if (counting)
+    {
+      prePass.BeginCount(vtkPhongDepthPrePass::Shaded);
+    }
     this->Superclass::RenderPieceDraw(ren, act);
+    if (counting)
+    {
+      prePass.EndCount();
+    }
+    this->Internal->DrawingDepthOnly = false;
   }
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
   state->vtkglDepthFunc(GL_LEQUAL);
+  if (counting)
+  {
+    prePass.BeginCount(vtkPhongDepthPrePass::Visible);
+  }
   this->Superclass::RenderPieceDraw(ren, act);
+  if (counting)
+  {
+    prePass.EndCount();
+  }
 }
 
 //------------------------------------------------------------------------------
 // Only opaque lit surfaces without edges or vertices drawn over them (VTK offsets those
-// against the surface's depth, which the pre-pass already holds), outside selection;
-// Automatic decides from the work the mapper knows of (docs/results/performance.md,
-// "Depth complexity").
-bool vtkPhongPolyDataMapper::WantsDepthPrePass(vtkRenderer* ren, vtkActor* act)
+// against the surface's depth, which the pre-pass already holds), outside selection.
+bool vtkPhongPolyDataMapper::CanUseDepthPrePass(vtkRenderer* ren, vtkActor* act)
 {
-  if (this->DepthPrePass == DepthPrePassOff || act->IsRenderingTranslucentPolygonalGeometry() ||
-    ren->GetSelector() || !act->GetProperty()->GetLighting() ||
-    act->GetProperty()->GetOpacity() < 1.0 || act->GetProperty()->GetEdgeVisibility() ||
-    act->GetProperty()->GetVertexVisibility() || !ren->GetRenderWindow())
+  vtkProperty* property = act->GetProperty();
+  return !act->IsRenderingTranslucentPolygonalGeometry() && !ren->GetSelector() &&
+    property->GetLighting() && property->GetOpacity() >= 1.0 && !property->GetEdgeVisibility() &&
+    !property->GetVertexVisibility() && ren->GetRenderWindow() && this->CurrentInput &&
+    this->CurrentInput->GetNumberOfPolys() + this->CurrentInput->GetNumberOfStrips() > 0;
+}
+
+//------------------------------------------------------------------------------
+// Where the counts tell what the pre-pass saves: the lit draw skips hidden fragments only
+// when its fragment shader leaves the depth alone (no polygon offset written into
+// gl_FragDepth, no imposters), and a render pass (shadows, SSAO) draws the actor several
+// times a frame with programs of its own.
+bool vtkPhongPolyDataMapper::CanMeasureDepthPrePass(vtkRenderer*, vtkActor* act)
+{
+  vtkProperty* property = act->GetProperty();
+  vtkInformation* keys = act->GetPropertyKeys();
+  if (property->GetRepresentation() != VTK_SURFACE || property->GetRenderPointsAsSpheres() ||
+    property->GetRenderLinesAsTubes() || (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())))
   {
     return false;
   }
-  if (this->DepthPrePass == DepthPrePassOn)
+  switch (vtkMapper::GetResolveCoincidentTopology())
   {
-    return true;
+    case VTK_RESOLVE_SHIFT_ZBUFFER:
+      return vtkMapper::GetResolveCoincidentTopologyZShift() == 0.0;
+    case VTK_RESOLVE_POLYGON_OFFSET:
+    {
+      double factor = 0.0, units = 0.0;
+      this->GetCoincidentTopologyPolygonOffsetParameters(factor, units);
+      return factor == 0.0 && units == 0.0;
+    }
+    default:
+      return true;
   }
-  return vtkPhongDepthPrePassPays(ren, this->CurrentInput, this->GetNumberOfCulledLights());
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongPolyDataMapper::GetDepthComplexity()
+{
+  return this->Internal->PrePass.GetDepthComplexity();
 }
 
 //------------------------------------------------------------------------------
@@ -377,6 +459,7 @@ void vtkPhongPolyDataMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 //------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->Internal->PrePass.ReleaseGraphicsResources(window);
   this->Internal->Core->ReleaseGraphicsResources();
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -396,6 +479,7 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "UsedDepthPrePass: " << (this->UsedDepthPrePass ? "yes" : "no") << "\n";
+  os << indent << "DepthComplexity: " << this->Internal->PrePass.GetDepthComplexity() << "\n";
   os << indent << "MaximumNumberOfShaderPrograms: " << this->MaximumNumberOfShaderPrograms << "\n";
   os << indent << "Lighting:\n";
   this->Internal->Core->PrintSelf(os, indent.GetNextIndent());

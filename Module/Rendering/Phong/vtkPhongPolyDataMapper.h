@@ -181,19 +181,24 @@ public:
 
   ///@{
   /**
-   * Depth pre-pass: draw the opaque geometry once with colour writes off (depth only), then
-   * again with the lighting, so that with the depth test (VTK's GL_LEQUAL) only the nearest
-   * surface of each pixel is shaded however many layers lie behind it. Off (the default), On,
-   * or Automatic: on from 4 evaluated lights. It pays only where surfaces are drawn behind
-   * others (nested or folded surfaces drawn back to front: 0.56-0.69x under 8 lights on
-   * llvmpipe); on a single convex surface the depth-only draw costs nearly a lit one (up to
-   * 1.9x), hence not the default (docs/results/performance.md, "Depth complexity"). Never
-   * in translucent passes (depth peeling included), hardware selection (picking), for
-   * unlit actors or with edges or vertices shown. UsedDepthPrePass: whether the last draw used it.
+   * Depth pre-pass: draw the opaque geometry once with a program that computes no light
+   * (colour writes off), then lit, so that with the depth test (VTK's GL_LEQUAL) only the
+   * nearest surface of each pixel is shaded however many layers lie behind it. The pre-pass
+   * costs about one unlit draw and saves the lighting of every hidden layer. Automatic (the
+   * default) counts, on the GPU, the fragments a plain draw shades and those the pre-pass
+   * leaves visible, and uses the pre-pass while the hidden share pays for it under the
+   * lights evaluated (vtkPhongDepthPrePass.h; the break-even is in
+   * docs/results/performance.md, "Depth complexity"); On always, Off never. Never in
+   * translucent passes (depth peeling included), hardware selection (picking), for unlit
+   * actors or with edges or vertices shown; Automatic also leaves out render passes (shadows,
+   * SSAO), depth offsets and imposters, where the lit draw cannot skip hidden fragments.
+   * UsedDepthPrePass: whether the last draw used it. DepthComplexity: fragments a plain draw
+   * shades per visible one, as last measured by Automatic (0: not measured).
    */
   vtkSetClampMacro(DepthPrePass, int, DepthPrePassOff, DepthPrePassAutomatic);
   vtkGetMacro(DepthPrePass, int);
   vtkGetMacro(UsedDepthPrePass, bool);
+  double GetDepthComplexity();
   ///@}
 
   ///@{
@@ -267,7 +272,9 @@ protected:
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
-  bool WantsDepthPrePass(vtkRenderer* ren, vtkActor* act);
+  bool CanUseDepthPrePass(vtkRenderer* ren, vtkActor* act);
+  bool CanMeasureDepthPrePass(vtkRenderer* ren, vtkActor* act);
+  void RenderPieceDrawWithDepthPrePass(vtkRenderer* ren, vtkActor* act, bool counting);
 
   int DebugView = Final;
   int DebugLightIndex = 0;
@@ -278,7 +285,7 @@ protected:
   bool UsedGeneratedNormals = false;
   bool ShaderSpecialization = true;
   double LightCullingBound = 0.5 / 255.0;
-  int DepthPrePass = DepthPrePassOff;
+  int DepthPrePass = DepthPrePassAutomatic;
   bool UsedDepthPrePass = false;
   int MaximumNumberOfShaderPrograms = 32;
 

@@ -88,6 +88,9 @@ public:
     /// positional lights may be left out of an actor while the colour they could add there
     /// stays within this bound (vtkPhongLightCulling); 0 keeps every light
     double LightCullingBound = 0.5 / 255.0;
+    /// the depth pre-pass: VTK's fragment shader with no lighting code at all, so that the
+    /// pass costs what an unlit draw does (vtkPhongDepthPrePass.h)
+    bool DepthOnly = false;
   };
 
   /**
@@ -95,7 +98,8 @@ public:
    */
   struct Plan
   {
-    bool Handled = false; ///< false: VTK's own lighting code is used
+    bool Handled = false;   ///< false: VTK's own lighting code is used
+    bool DepthOnly = false; ///< the depth pre-pass's program: no lighting, not a variant
     vtkPhongFeatureSet Features;
     std::string Signature;
     std::vector<vtkLight*> DirectionalLights;

@@ -100,6 +100,11 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
     return plan;
   }
   plan.Handled = true;
+  if (options.DepthOnly)
+  {
+    MakeDepthOnlyPlan(actor, ren, plan);
+    return plan;
+  }
   plan.DebugView = options.DebugView;
   SortLightsByKind(switchedOn, plan);
   this->PickDebugLight(switchedOn, options, plan);
@@ -130,6 +135,19 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   SetNormalFeatures(terms, state, perVertex, allFeatures, plan);
   plan.Signature = MakeSignature(plan, allFeatures);
   return plan;
+}
+
+//------------------------------------------------------------------------------
+// The depth pre-pass draws what the lit draw will, with no feature: the fragment shader keeps
+// VTK's colour (its opacity decides the discard), depth and clipping code and computes no light.
+void vtkPhongShaderPlanner::MakeDepthOnlyPlan(vtkActor* actor, vtkRenderer* ren, Plan& plan)
+{
+  plan.FrontMaterial = actor->GetProperty();
+  plan.BackMaterial = (ren->GetTwoSidedLighting() && actor->GetBackfaceProperty())
+    ? actor->GetBackfaceProperty()
+    : plan.FrontMaterial;
+  plan.DepthOnly = true;
+  plan.Signature = "| depth only";
 }
 
 //------------------------------------------------------------------------------
