@@ -13,13 +13,14 @@ namespace
 // fragment it shades; with it, it pays a depth pass over the whole geometry and lights only
 // the fragments left visible:
 //   saving = (shaded - visible) * (HiddenFragment + lights * HiddenFragmentPerLight)
-//   cost   = shaded * DepthFragment + triangles * DepthTriangle + PerFrame
-// The depth pass costs mostly per triangle (llvmpipe's vertex processing and triangle setup
-// run on one thread); PerFrame is the CPU side of switching programs twice per draw.
-constexpr double HiddenFragment = 27.0;
-constexpr double HiddenFragmentPerLight = 9.3;
-constexpr double DepthFragment = 9.0;
-constexpr double DepthTriangle = 250.0;
+//   cost   = visible * DepthFragment + triangles * DepthTriangle + PerFrame
+// The depth pass (back faces culled) costs mostly per triangle (llvmpipe's vertex processing
+// and triangle setup run on one thread); PerFrame is the CPU side of switching programs twice per
+// draw.
+constexpr double HiddenFragment = 3.5;
+constexpr double HiddenFragmentPerLight = 6.4;
+constexpr double DepthFragment = 3.4;
+constexpr double DepthTriangle = 78.0;
 constexpr double PerFrame = 400000.0;
 
 // A count of shaded fragments that moved by more than this share since the last probe means
@@ -36,7 +37,7 @@ bool vtkPhongDepthPrePass::Pays(
 {
   const int lights = evaluatedLights > 0 ? evaluatedLights : 0;
   const double saving = (shaded - visible) * (HiddenFragment + lights * HiddenFragmentPerLight);
-  const double cost = shaded * DepthFragment + triangles * DepthTriangle + PerFrame;
+  const double cost = visible * DepthFragment + triangles * DepthTriangle + PerFrame;
   return saving > cost;
 }
 
@@ -55,23 +56,31 @@ bool vtkPhongDepthPrePass::Decide(int evaluatedLights, double triangles, vtkWind
     return this->LastWithPrePass; // the last counts are not in yet: keep going as before
   }
   bool usePrePass = false;
-  if (this->ShadedCount <= 0.0 && !this->Probed)
+  if (this->ShadedCount <= 0.0)
   {
-    usePrePass = false; // the first frame: a plain draw, counting what it shades
+    usePrePass = false; // measure a plain draw first
   }
-  else if (!this->Probed)
+  else if (this->VisibleCount <= 0.0)
   {
-    usePrePass = true;
+    usePrePass = true; // then probe the pre-pass
   }
-  else if (this->LastWithPrePass)
+  else if (!this->Decided || this->Refreshing)
   {
-    usePrePass = Pays(this->ShadedCount, this->VisibleCount, triangles, evaluatedLights);
+    this->DecidedPrePass = Pays(this->ShadedCount, this->VisibleCount, triangles, evaluatedLights);
+    this->Decided = true;
+    this->Refreshing = false;
+    this->SeenAtDecision = this->DecidedPrePass ? this->VisibleCount : this->ShadedCount;
+    this->FramesSinceDecision = 0;
+    usePrePass = this->DecidedPrePass;
   }
   else
   {
-    const double change = std::abs(this->ShadedCount - this->ShadedAtProbe);
-    usePrePass =
-      ++this->FramesSinceProbe >= ReprobeInterval || change > ReprobeChange * this->ShadedAtProbe;
+    // Each mode counts one of the two numbers: the other is refreshed by one frame in the
+    // other mode when the one counted moves (the view or the data changed) or at intervals.
+    const double seen = this->DecidedPrePass ? this->VisibleCount : this->ShadedCount;
+    this->Refreshing = ++this->FramesSinceDecision >= ReprobeInterval ||
+      std::abs(seen - this->SeenAtDecision) > ReprobeChange * this->SeenAtDecision;
+    usePrePass = this->Refreshing ? !this->DecidedPrePass : this->DecidedPrePass;
   }
   this->LastWithPrePass = usePrePass;
   return usePrePass;
@@ -131,25 +140,22 @@ void vtkPhongDepthPrePass::CollectCounts()
     }
     glGetQueryObjectuiv(this->Queries[count], GL_QUERY_RESULT, &counts[count]);
   }
-  if (this->Started[Shaded])
+  for (int count : { Shaded, Visible })
   {
-    this->ShadedCount = counts[Shaded];
+    if (this->Started[count])
+    {
+      (count == Shaded ? this->ShadedCount : this->VisibleCount) = counts[count];
+      this->Started[count] = false;
+    }
   }
-  if (this->Started[Shaded] && this->Started[Visible])
-  {
-    this->VisibleCount = counts[Visible];
-    this->ShadedAtProbe = this->ShadedCount;
-    this->FramesSinceProbe = 0;
-    this->Probed = true;
-  }
-  this->Started[Shaded] = this->Started[Visible] = false;
 }
 
 //------------------------------------------------------------------------------
 double vtkPhongDepthPrePass::GetDepthComplexity() const
 {
-  return (this->Probed && this->VisibleCount > 0.0) ? this->ShadedAtProbe / this->VisibleCount
-                                                    : 0.0;
+  return (this->ShadedCount > 0.0 && this->VisibleCount > 0.0)
+    ? this->ShadedCount / this->VisibleCount
+    : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -170,7 +176,8 @@ void vtkPhongDepthPrePass::Reset()
   this->Started[0] = this->Started[1] = false;
   this->Running = -1;
   this->LastWithPrePass = false;
-  this->Probed = false;
-  this->ShadedCount = this->VisibleCount = this->ShadedAtProbe = 0.0;
-  this->FramesSinceProbe = 0;
+  this->ShadedCount = this->VisibleCount = 0.0;
+  this->Decided = this->DecidedPrePass = this->Refreshing = false;
+  this->SeenAtDecision = 0.0;
+  this->FramesSinceDecision = 0;
 }

@@ -9,16 +9,16 @@
  * only the GPU knows: this class counts them (GL_SAMPLES_PASSED queries around the draws).
  *
  * - A plain draw counts the fragments it shades (Shaded).
- * - A draw with the pre-pass counts the fragments the depth pass lets through, which are the
- *   ones a plain draw would have shaded in the same order (Shaded), and the fragments the lit
- *   draw shades (Visible).
+ * - A draw with the pre-pass counts the fragments its lit draw shades (Visible); its depth
+ *   pass leaves back faces out, so it does not count what a plain draw would shade.
  *
- * Automatic mode draws plainly first, then probes one frame with the pre-pass and keeps it
+ * Automatic mode draws plainly first, then probes one frame with the pre-pass, then uses it
  * while the lighting of the hidden fragments (Shaded - Visible) costs more than the depth
  * pass over the geometry, under the lights the lit program evaluates (Pays(); the cost model
- * was measured on llvmpipe, docs/results/performance.md, "Depth complexity"). Off,
- * it probes again when the count of shaded fragments moves by a quarter (the view or the
- * data changed) or after ReprobeInterval frames.
+ * was measured on llvmpipe, docs/results/performance.md, "Depth complexity"). Each mode
+ * counts one of the two numbers; the other is refreshed by one frame in the other mode when
+ * the one counted moves by a quarter (the view or the data changed) or after
+ * ReprobeInterval frames, and the decision is taken again.
  *
  * Counts arrive a frame late (the query results are read when available, never waited for).
  * Counting is skipped while another GL_SAMPLES_PASSED query is running (VTK's depth peeling).
@@ -53,8 +53,8 @@ public:
 
   ///@{
   /**
-   * Count the fragments of the draw between Begin and End: the plain draw or the depth pass
-   * (Shaded), or the lit draw after the depth pass (Visible).
+   * Count the fragments of the draw between Begin and End: the plain draw (Shaded) or the
+   * lit draw after the depth pass (Visible).
    */
   enum Count
   {
@@ -66,8 +66,8 @@ public:
   ///@}
 
   /**
-   * Shaded / Visible at the last probe: how many fragments a plain draw shades per pixel it
-   * shows. 0 before the first probe.
+   * Shaded / Visible, as last counted: how many fragments a plain draw shades per pixel it
+   * shows. 0 before both were counted.
    */
   double GetDepthComplexity() const;
 
@@ -76,7 +76,7 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* window);
 
-  /// Frames drawn without the pre-pass before it is probed again.
+  /// Frames drawn in one mode before the other mode's count is refreshed.
   static constexpr int ReprobeInterval = 64;
 
 private:
@@ -85,14 +85,16 @@ private:
 
   unsigned int Queries[2] = { 0, 0 };
   vtkWindow* Window = nullptr;
-  bool Started[2] = { false, false }; // a count was started this frame and not read yet
+  bool Started[2] = { false, false }; // a count was started and not read yet
   int Running = -1;                   // the count running between Begin and End
   bool LastWithPrePass = false;
-  bool Probed = false;
-  double ShadedCount = 0.0;  // from the latest frame
-  double VisibleCount = 0.0; // from the latest frame with the pre-pass
-  double ShadedAtProbe = 0.0;
-  int FramesSinceProbe = 0;
+  double ShadedCount = 0.0;  // from the latest plain draw
+  double VisibleCount = 0.0; // from the latest draw with the pre-pass
+  bool Decided = false;
+  bool DecidedPrePass = false;
+  bool Refreshing = false; // this frame runs in the other mode to refresh its count
+  double SeenAtDecision = 0.0;
+  int FramesSinceDecision = 0;
 };
 
 #endif

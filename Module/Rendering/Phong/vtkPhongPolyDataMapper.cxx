@@ -376,16 +376,20 @@ void vtkPhongPolyDataMapper::RenderPieceDrawWithDepthPrePass(
   {
     vtkOpenGLState::ScopedglColorMask colorMask(state);
     state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    // Back faces may be left out of the depth pass: the lit draw writes depth with GL_LEQUAL,
+    // so a back face nearer than every front face still wins there, and any subset of the
+    // surfaces gives the same picture. The depth pass then sets up half the triangles of a
+    // closed surface. The actor's own culling, when it has some, applies to both draws.
+    vtkProperty* property = act->GetProperty();
+    const bool actorCulls = property->GetBackfaceCulling() || property->GetFrontfaceCulling();
+    vtkOpenGLState::ScopedglEnableDisable culling(state, GL_CULL_FACE);
+    if (!actorCulls)
+    {
+      state->vtkglCullFace(GL_BACK);
+      state->vtkglEnable(GL_CULL_FACE);
+    }
     this->Internal->DrawingDepthOnly = true;
-    if (counting)
-    {
-      prePass.BeginCount(vtkPhongDepthPrePass::Shaded);
-    }
     this->Superclass::RenderPieceDraw(ren, act);
-    if (counting)
-    {
-      prePass.EndCount();
-    }
     this->Internal->DrawingDepthOnly = false;
   }
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
