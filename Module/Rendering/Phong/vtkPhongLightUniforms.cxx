@@ -235,8 +235,24 @@ void vtkPhongLightUniforms::UploadDirectional()
   if (this->ThePlan.Has(Feature::Directional))
   {
     SetVec3Array(this->Program, "phongDirectionalLightToLightVC", toLight);
-    SetVec3Array(this->Program, "phongDirectionalLightDiffuse", diffuse);
-    SetVec3Array(this->Program, "phongDirectionalLightSpecular", specular);
+    this->UploadColors("phongDirectionalLight", diffuse, specular);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The diffuse and specular colours of one light kind. Without SEPARATE_SPECULAR_COLORS every
+// light's specular colour, as uploaded, is its diffuse colour (vtkPhongShaderPlanner compares
+// the same floats), the specular sums read the diffuse array, and no specular array exists.
+void vtkPhongLightUniforms::UploadColors(
+  const std::string& prefix, const std::vector<float>& diffuse, const std::vector<float>& specular)
+{
+  if (this->ThePlan.Has(Feature::Diffuse))
+  {
+    SetVec3Array(this->Program, prefix + "Diffuse", diffuse);
+  }
+  if (this->ThePlan.Has(Feature::SeparateSpecularColors))
+  {
+    SetVec3Array(this->Program, prefix + "Specular", specular);
   }
 }
 
@@ -362,14 +378,7 @@ void vtkPhongLightUniforms::UploadPositional(
   {
     SetVec3Array(this->Program, name + "Ambient", arrays.Ambient);
   }
-  if (plan.Has(Feature::Diffuse))
-  {
-    SetVec3Array(this->Program, name + "Diffuse", arrays.Diffuse);
-  }
-  if (plan.Has(Feature::Specular))
-  {
-    SetVec3Array(this->Program, name + "Specular", arrays.Specular);
-  }
+  this->UploadColors(name, arrays.Diffuse, arrays.Specular);
   if (isSpot)
   {
     this->UploadSpotArrays(name, arrays);

@@ -21,6 +21,7 @@
 
 #include <array>  // for std::array
 #include <map>    // for std::map
+#include <string> // for std::string
 #include <vector> // for std::vector
 
 class vtkMatrix4x4;
@@ -71,6 +72,8 @@ private:
   int IndexOf(vtkLight* light) const;
   void ReadSceneAmbient();
   void UploadDirectional();
+  void UploadColors(const std::string& prefix, const std::vector<float>& diffuse,
+    const std::vector<float>& specular);
   void UploadAmbient();
   RGB AttenuationOf(vtkLight* light);
   void AddSpot(vtkLight* light, const LightGeometry& geometry, PositionalArrays& arrays);

@@ -50,6 +50,7 @@ enum class vtkPhongFeature : unsigned char
   PointAttenuation,
   Positional,
   PositionalAmbient,
+  SeparateSpecularColors, ///< the specular sums read their own light colours, not the diffuse ones
   ShadingNormal,
   ShadowMaps, ///< vtkShadowMapPass's factors multiply each light (set from the shader source)
   SmoothTerminator,

@@ -74,6 +74,7 @@ private:
   static Terms ChooseTerms(const Plan& plan, bool haveLights, bool allFeatures);
   static void SetTermFeatures(const Terms& terms, Plan& plan);
   static void SetLightFeatures(const Terms& terms, bool allFeatures, Plan& plan);
+  static bool HasSeparateSpecularColors(const Terms& terms, bool allFeatures, const Plan& plan);
   static void SetMaterialFeatures(const Terms& terms, bool allFeatures, Plan& plan);
   static bool SetInterpolationFeatures(const Terms& terms, const PrimitiveState& state,
     bool geometryView, vtkRenderer* ren, Plan& plan);

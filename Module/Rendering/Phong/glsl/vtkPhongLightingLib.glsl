@@ -10,8 +10,11 @@
 // "//PHONG_IF FLAG" and "//PHONG_ENDIF" is kept only when the scene needs FLAG
 // ("!FLAG": when it does not), and @NAME@ is replaced by a number, so the
 // shader carries only the light kinds and the terms in use. Light colours
-// arrive premultiplied by the light's intensity. Directions and positions are
-// in view coordinates (VC). The ambient light of directional lights does not
+// arrive premultiplied by the light's intensity. A light's specular colour is
+// its diffuse colour unless set apart (vtkLight::SetSpecularColor); only then
+// (SEPARATE_SPECULAR_COLORS) do the specular sums read arrays of their own, as
+// every uniform read costs each fragment on llvmpipe. Directions and positions
+// are in view coordinates (VC). The ambient light of directional lights does not
 // depend on the surface and is folded into one uniform on the CPU.
 //============================================================================
 
@@ -40,7 +43,7 @@ uniform vec3 phongDirectionalLightToLightVC[@DIRECTIONAL_COUNT@]; // unit L_i
 //PHONG_IF DIFFUSE
 uniform vec3 phongDirectionalLightDiffuse[@DIRECTIONAL_COUNT@]; // Ld_i*I_i
 //PHONG_ENDIF
-//PHONG_IF SPECULAR
+//PHONG_IF SEPARATE_SPECULAR_COLORS
 uniform vec3 phongDirectionalLightSpecular[@DIRECTIONAL_COUNT@]; // Ls_i*I_i
 //PHONG_ENDIF
 //PHONG_ENDIF
@@ -57,7 +60,7 @@ uniform vec3 phongPointLightAmbient[@POINT_COUNT@]; // La_i*I_i
 //PHONG_IF DIFFUSE
 uniform vec3 phongPointLightDiffuse[@POINT_COUNT@];
 //PHONG_ENDIF
-//PHONG_IF SPECULAR
+//PHONG_IF SEPARATE_SPECULAR_COLORS
 uniform vec3 phongPointLightSpecular[@POINT_COUNT@];
 //PHONG_ENDIF
 //PHONG_ENDIF
@@ -82,7 +85,7 @@ uniform vec3 phongSpotLightAmbient[@SPOT_COUNT@];
 //PHONG_IF DIFFUSE
 uniform vec3 phongSpotLightDiffuse[@SPOT_COUNT@];
 //PHONG_ENDIF
-//PHONG_IF SPECULAR
+//PHONG_IF SEPARATE_SPECULAR_COLORS
 uniform vec3 phongSpotLightSpecular[@SPOT_COUNT@];
 //PHONG_ENDIF
 //PHONG_ENDIF
@@ -180,7 +183,12 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
     sums.diffuse += phongDirectionalLightDiffuse[i] * max(NdotL, 0.0);
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
+//PHONG_IF SEPARATE_SPECULAR_COLORS
     sums.specular += phongDirectionalLightSpecular[i] * phongSpecular(N, L, V, NdotL, shininess);
+//PHONG_ENDIF
+//PHONG_IF !SEPARATE_SPECULAR_COLORS
+    sums.specular += phongDirectionalLightDiffuse[i] * phongSpecular(N, L, V, NdotL, shininess);
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SHADOW_MAPS
@@ -189,7 +197,12 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
     sums.diffuse += phongDirectionalLightDiffuse[i] * (shadow * max(NdotL, 0.0));
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
+//PHONG_IF SEPARATE_SPECULAR_COLORS
     sums.specular += phongDirectionalLightSpecular[i] * (shadow * phongSpecular(N, L, V, NdotL, shininess));
+//PHONG_ENDIF
+//PHONG_IF !SEPARATE_SPECULAR_COLORS
+    sums.specular += phongDirectionalLightDiffuse[i] * (shadow * phongSpecular(N, L, V, NdotL, shininess));
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_ENDIF
   }
@@ -217,7 +230,12 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
     sums.diffuse += (A * max(NdotL, 0.0)) * phongPointLightDiffuse[i];
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
+//PHONG_IF SEPARATE_SPECULAR_COLORS
     sums.specular += (A * phongSpecular(N, L, V, NdotL, shininess)) * phongPointLightSpecular[i];
+//PHONG_ENDIF
+//PHONG_IF !SEPARATE_SPECULAR_COLORS
+    sums.specular += (A * phongSpecular(N, L, V, NdotL, shininess)) * phongPointLightDiffuse[i];
+//PHONG_ENDIF
 //PHONG_ENDIF
   }
 //PHONG_ENDIF
@@ -256,7 +274,12 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
     sums.diffuse += (A * max(NdotL, 0.0)) * phongSpotLightDiffuse[i];
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
+//PHONG_IF SEPARATE_SPECULAR_COLORS
     sums.specular += (A * phongSpecular(N, L, V, NdotL, shininess)) * phongSpotLightSpecular[i];
+//PHONG_ENDIF
+//PHONG_IF !SEPARATE_SPECULAR_COLORS
+    sums.specular += (A * phongSpecular(N, L, V, NdotL, shininess)) * phongSpotLightDiffuse[i];
+//PHONG_ENDIF
 //PHONG_ENDIF
   }
 //PHONG_ENDIF

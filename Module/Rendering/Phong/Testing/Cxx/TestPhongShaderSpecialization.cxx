@@ -3,12 +3,15 @@
 // VTK's (1, 0, 0), no positional ambient code for lights without ambient
 // colour, no spot code without spots and no falloff code for exponent 1, no
 // emission without a vtkPhongProperty, per-vertex lighting in the vertex shader
-// only, and no template directive left over. The all-features variant holds
-// everything and draws the same picture. Also resolves every template section
-// under many flag combinations without an error.
+// only, no specular colour arrays while every light's specular colour is its
+// diffuse colour, and no template directive left over. The all-features variant
+// holds everything and draws the same picture. Also resolves every template
+// section under many flag combinations without an error.
 
-#include "vtkPhongTestUtilities.h"
+#include "vtkPhongReferenceTesting.h"
 
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongShaderBuilder.h"
 
 namespace
@@ -148,6 +151,90 @@ int TestPhongShaderSpecialization(int, char*[])
         " levels)");
   }
 
+  // Specular colours: the specular sums read the diffuse colour arrays while every light's
+  // specular colour is its diffuse colour, and arrays of their own once one differs. Both
+  // variants draw the same picture, bit for bit, when the values are the same: a second light
+  // behind the sphere lights no visible point (N.L < 0 there, every term exactly 0) and
+  // switches the variant by its specular colour alone.
+  {
+    vtkPhongTest::Scene view(96, 96);
+    view.Renderer->AutomaticLightCreationOff();
+    const double behind[3] = { 0.0, 0.0, -1.0 };
+    vtkLight* keyLight = vtkPhongTest::AddLight(view, key, origin, white, false);
+    keyLight->SetColor(1.0, 0.9, 0.7);
+    vtkLight* backLight = vtkPhongTest::AddLight(view, behind, origin, white, false);
+    vtkNew<vtkPhongProperty> shiny;
+    shiny->SetColor(0.8, 0.5, 0.3);
+    shiny->SetAmbient(0.1);
+    shiny->SetSpecular(0.6);
+    shiny->SetShininess(20.0);
+    vtkActor* ball = vtkPhongTest::AddActor(view, vtkPhongTest::MakeSphere(48), shiny);
+    auto* ballMapper = vtkPhongPolyDataMapper::SafeDownCast(ball->GetMapper());
+    view.LookFromZ(2.5);
+    vtkNew<vtkPhongFloatRenderPass> floatPass;
+    auto renderBoth =
+      [&](vtkSmartPointer<vtkImageData>& picture, vtkSmartPointer<vtkImageData>& floatPicture)
+    {
+      view.Renderer->SetPass(nullptr);
+      view.Window->Render();
+      picture = vtkPhongTest::Snapshot(view.Window);
+      floatPicture = vtkPhongTest::RenderFloat(view, floatPass);
+      view.Renderer->SetPass(nullptr);
+      return std::string(ballMapper->GetLastFragmentShaderSource());
+    };
+    vtkSmartPointer<vtkImageData> shared, sharedFloat, separate, separateFloat;
+    const std::string sharedSource = renderBoth(shared, sharedFloat);
+    checks.Expect(!Has(sharedSource, "phongDirectionalLightSpecular") &&
+        Has(sharedSource, "phongDirectionalLightDiffuse[i] * phongSpecular("),
+      "equal colours: the specular sum reads the diffuse colours, no specular array");
+    const int variants = ballMapper->GetNumberOfShaderVariants();
+    backLight->SetSpecularColor(0.2, 0.4, 1.0);
+    const std::string separateSource = renderBoth(separate, separateFloat);
+    checks.Expect(Has(separateSource, "uniform vec3 phongDirectionalLightSpecular[2]") &&
+        Has(separateSource, "phongDirectionalLightSpecular[i] * phongSpecular("),
+      "a specular colour apart: the specular sum reads its own colours");
+    checks.Expect(ballMapper->GetNumberOfShaderVariants() == variants + 1,
+      "a specular colour apart is one more variant");
+    const int difference = vtkPhongTest::MaxDifference(shared, separate);
+    checks.Expect(difference == 0,
+      "shared and separate colour arrays: the same 8-bit picture (" + std::to_string(difference) +
+        " levels)");
+    checks.Expect(vtkPhongTest::ArraysEqual(sharedFloat->GetPointData()->GetScalars(),
+                    separateFloat->GetPointData()->GetScalars()),
+      "shared and separate colour arrays: the same float picture");
+    // The all-features variant keeps the specular arrays, whatever the colours.
+    keyLight->SetSpecularColor(1.0, 0.9, 0.7);
+    backLight->SetSpecularColor(1.0, 1.0, 1.0);
+    ballMapper->ShaderSpecializationOff();
+    const std::string everything = renderBoth(separate, separateFloat);
+    checks.Expect(Has(everything, "phongDirectionalLightSpecular[i]"),
+      "the all-features variant keeps the specular colour arrays");
+    ballMapper->ShaderSpecializationOn();
+
+    // The composite mapper plans its blocks the same way.
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetNumberOfBlocks(1);
+    blocks->SetBlock(0, vtkPhongTest::MakeSphere(24));
+    vtkNew<vtkPhongCompositePolyDataMapper> composite;
+    composite->SetInputDataObject(blocks);
+    ball->SetMapper(composite);
+    view.Window->Render();
+    auto signature = [&] { return std::string(composite->GetLastShaderSignature()); };
+    checks.Expect(!signature().empty() && !Has(signature(), "SEPARATE_SPECULAR_COLORS"),
+      "composite mapper, equal colours: shared colour arrays (" + signature() + ")");
+    backLight->SetSpecularColor(0.2, 0.4, 1.0);
+    view.Window->Render();
+    checks.Expect(Has(signature(), "SEPARATE_SPECULAR_COLORS"),
+      "composite mapper, a specular colour apart: separate arrays");
+    const int compositeVariants = composite->GetNumberOfShaderVariants();
+    backLight->SetSpecularColor(1.0, 1.0, 1.0);
+    view.Window->Render();
+    checks.Expect(!Has(signature(), "SEPARATE_SPECULAR_COLORS") &&
+        composite->GetNumberOfShaderVariants() == compositeVariants,
+      "composite mapper: back to shared arrays, no new variant");
+    checks.Expect(vtkPhongTest::NoGLErrors(view.Window, "specular colours"), "no GL error");
+  }
+
   // Every section of every template resolves cleanly under flag sets that
   // switch each conditional both ways.
   vtkNew<vtkPhongShaderBuilder> builder;
@@ -161,7 +248,7 @@ int TestPhongShaderSpecialization(int, char*[])
       F::SmoothTerminator, F::SoftSpotEdge, F::Parallel, F::PerVertex, F::SumsPerVertex,
       F::TwoSided, F::BackMaterial, F::ShadingNormal, F::NormalFallback, F::ViewVector,
       F::DebugNormal, F::PointAttenuation, F::SpotAttenuation, F::Attenuation, F::SpotFalloff,
-      F::DebugNormalVC, F::DebugPositionVC },
+      F::DebugNormalVC, F::DebugPositionVC, F::SeparateSpecularColors },
     { F::Diffuse, F::LightSums, F::Directional, F::SumsPerFragment, F::ShadingNormal, F::OneSided,
       F::ViewVector, F::LobeBlinn, F::Specular },
   };

@@ -1,8 +1,8 @@
 // Changing a value (colour, intensity, light position, shininess, camera)
 // updates uniforms and never builds a shader; changing the structure (a term
 // switched on or off, a new light kind, the lobe, a light's attenuation leaving
-// VTK's (1, 0, 0)) builds exactly one variant, and going back to a structure
-// seen before builds nothing.
+// VTK's (1, 0, 0), a light's specular colour leaving its diffuse colour) builds
+// exactly one variant, and going back to a structure seen before builds nothing.
 
 #include "vtkPhongTestUtilities.h"
 
@@ -39,7 +39,8 @@ int TestPhongVariantCache(int, char*[])
   const std::pair<const char*, std::function<void()>> valueChanges[] = {
     { "material colour", [&] { material->SetDiffuseColor(0.2, 0.5, 0.3); } },
     { "light intensity", [&] { light->SetIntensity(0.5); } },
-    { "light colour", [&] { light->SetDiffuseColor(0.5, 1.0, 1.0); } },
+    // SetColor sets the diffuse and the specular colour: they stay equal, a value change.
+    { "light colour", [&] { light->SetColor(0.5, 1.0, 1.0); } },
     { "light position", [&] { light->SetPosition(-0.5, 0.2, 1.0); } },
     { "renderer ambient", [&] { scene.Renderer->SetAmbient(2.0, 0.0, 0.0); } },
     { "shininess", [&] { material->SetShininess(2.0); } },
@@ -79,9 +80,15 @@ int TestPhongVariantCache(int, char*[])
     { "the point light's attenuation leaves (1, 0, 0)",
       [&] { point->SetAttenuationValues(1.0, 0.3, 0.0); } },
     { "another attenuation: a value", [&] { point->SetAttenuationValues(1.0, 0.0, 0.4); } },
+    // The specular sums read the diffuse colours until a light's specular colour differs.
+    { "a light's specular colour leaving its diffuse colour",
+      [&] { light->SetSpecularColor(1.0, 0.5, 0.5); } },
+    { "another specular colour: a value", [&] { light->SetSpecularColor(0.2, 0.5, 1.0); } },
+    { "the specular colour back to the diffuse colour",
+      [&] { light->SetSpecularColor(0.5, 1.0, 1.0); } },
   };
-  const int expectedNew[] = { 1, 0, 1, 1, 0, 1, 0 };
-  for (int i = 0; i < 7; ++i)
+  const int expectedNew[] = { 1, 0, 1, 1, 0, 1, 0, 1, 0, 0 };
+  for (int i = 0; i < 10; ++i)
   {
     const int count = mapper->GetShaderCompileCount();
     structureChanges[i].second();
@@ -91,8 +98,8 @@ int TestPhongVariantCache(int, char*[])
       std::string(structureChanges[i].first) + " builds " + std::to_string(expectedNew[i]) +
         " shader(s), built " + std::to_string(built));
   }
-  checks.Expect(mapper->GetNumberOfShaderVariants() == 5,
-    "five distinct variants: " + std::to_string(mapper->GetNumberOfShaderVariants()));
+  checks.Expect(mapper->GetNumberOfShaderVariants() == 6,
+    "six distinct variants: " + std::to_string(mapper->GetNumberOfShaderVariants()));
   checks.Expect(mapper->GetLastShaderBuildTime() > 0.0, "the build time is measured");
   checks.Expect(vtkPhongTest::NoGLErrors(scene.Window, "the variant changes"), "no GL error");
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
