@@ -389,7 +389,11 @@ void vtkPhongPolyDataMapper::RenderPieceDrawWithDepthPrePass(
       state->vtkglEnable(GL_CULL_FACE);
     }
     this->Internal->DrawingDepthOnly = true;
+    // VTK's draw advances the primitive id offset of cell colours and normals as it goes:
+    // the lit draw must start where the depth pass did.
+    const int primitiveIdOffset = this->PrimitiveIDOffset;
     this->Superclass::RenderPieceDraw(ren, act);
+    this->PrimitiveIDOffset = primitiveIdOffset;
     this->Internal->DrawingDepthOnly = false;
   }
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
