@@ -20,19 +20,20 @@ function (vtkphong_test_cxx_executable executable tests_variable)
   target_link_libraries("${executable}" PRIVATE X11::X11)
 endfunction ()
 
-# vtkphong_add_python_tests(BASELINES <dir> TESTS <name>...)
+# vtkphong_add_python_tests(BASELINES <dir> [SUFFIX <suffix> ARGS <arg>...] TESTS <name>...)
 #
 # One ctest per <name>.py of the calling Testing/Python directory, named
-# vtkPhongPython-<name>, run as `python3 <name>.py -B <baselines> -T <Testing/Temporary>`.
-# A test fails on a non-zero exit, an "ERROR: " line, VTK's ERR| output or a traceback.
+# vtkPhongPython-<name><suffix>, run as `python3 <name>.py <arg>... -B <baselines> -T
+# <Testing/Temporary>`. A test fails on a non-zero exit, an "ERROR: " line, VTK's ERR| output
+# or a traceback.
 function (vtkphong_add_python_tests)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "" "BASELINES" "TESTS")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "" "BASELINES;SUFFIX" "TESTS;ARGS")
   foreach (test IN LISTS arg_TESTS)
-    add_test(NAME "vtkPhongPython-${test}"
-      COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/${test}.py"
+    add_test(NAME "vtkPhongPython-${test}${arg_SUFFIX}"
+      COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/${test}.py" ${arg_ARGS}
         -B "${arg_BASELINES}"
         -T "${VTKPHONG_TEST_OUTPUT_DIR}")
-    set_tests_properties("vtkPhongPython-${test}" PROPERTIES
+    set_tests_properties("vtkPhongPython-${test}${arg_SUFFIX}" PROPERTIES
       ENVIRONMENT "PYTHONPATH=${VTKPHONG_BUILD_PYTHONPATH}:${VTKPHONG_TESTING_CORE_DIR};VTKPHONG_VTK_CHANGES=${VTKPHONG_VTK_CHANGES}"
       FAIL_REGULAR_EXPRESSION "(\n|^)ERROR: ;ERR\\|;Traceback")
   endforeach ()

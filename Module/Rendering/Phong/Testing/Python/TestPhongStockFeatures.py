@@ -740,7 +740,13 @@ def render(build, phong):
         vtkphong.overrides.disable()
     scene = Scene(phong)
     build(scene)
+    if phong and OPTIONS.depth_prepass:
+        for mapper in scene.mappers:
+            if hasattr(mapper, "SetDepthPrePass"):
+                mapper.SetDepthPrePass(vtkPhongPolyDataMapper.DepthPrePassOn)
     pixels, _ = snapshot(scene.window)
+    PREPASS_CASES.update(build.__name__ for m in scene.mappers
+                         if phong and hasattr(m, "GetUsedDepthPrePass") and m.GetUsedDepthPrePass())
     errors = gl_errors(scene.window)
     checks.expect(not errors, "%s drew with no OpenGL error (%s)"
                   % ("vtkPhong" if phong else "stock VTK", errors))
@@ -893,11 +899,14 @@ def options():
     parser = argparse.ArgumentParser()
     parser.add_argument("-B", dest="baselines")
     parser.add_argument("-T", dest="temporary")
+    parser.add_argument("--depth-prepass", action="store_true",
+                        help="vtkPhong's mappers draw with the depth pre-pass on")
     parser.add_argument("cases", nargs="*", help="run only the cases whose names hold these")
     return parser.parse_args()
 
 
 OPTIONS = options()
+PREPASS_CASES = set()  # the cases where a mapper drew with the depth pre-pass
 
 
 def main():
@@ -915,6 +924,10 @@ def main():
     if not wanted or "broken" in wanted:
         broken_replacement(False)
         broken_replacement(True)
+    if OPTIONS.depth_prepass:
+        print("drawn with the depth pre-pass: %s" % ", ".join(sorted(PREPASS_CASES)))
+        checks.expect(wanted or len(PREPASS_CASES) >= 20, "the pre-pass drew in %d cases"
+                      % len(PREPASS_CASES))
     checks.exit()
 
 
