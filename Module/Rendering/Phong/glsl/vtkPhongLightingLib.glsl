@@ -174,7 +174,7 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
 //PHONG_ENDIF
 
 //PHONG_IF DIRECTIONAL
-  for (int i = 0; i < phongDirectionalLightCount; ++i)
+  for (int i = 0; i < @DIRECTIONAL_COUNT@; ++i) // unrolled up to 64 lights (vtkPhongShaderTemplate)
   {
     vec3 L = phongDirectionalLightToLightVC[i];
     float NdotL = dot(N, L);
@@ -209,7 +209,7 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
 //PHONG_ENDIF
 
 //PHONG_IF POINT
-  for (int i = 0; i < phongPointLightCount; ++i)
+  for (int i = 0; i < @POINT_COUNT@; ++i) // unrolled up to 64 lights (vtkPhongShaderTemplate)
   {
     float d;
     vec3 L = phongToPositionalLight(phongPointLightPositionVC[i], positionVC, N, d);
@@ -241,7 +241,7 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
 //PHONG_ENDIF
 
 //PHONG_IF SPOT
-  for (int i = 0; i < phongSpotLightCount; ++i)
+  for (int i = 0; i < @SPOT_COUNT@; ++i) // unrolled up to 64 lights (vtkPhongShaderTemplate)
   {
     float d;
     vec3 L = phongToPositionalLight(phongSpotLightPositionVC[i], positionVC, N, d);
