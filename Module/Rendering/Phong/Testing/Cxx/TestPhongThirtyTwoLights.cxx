@@ -1,6 +1,8 @@
 // Thirty-two coloured point lights in a ring around a sphere: each makes its
 // own highlight, and none is dropped (stock VTK's uniform-per-light scheme
-// needs one declaration each; here they are arrays).
+// needs one declaration each; here they are arrays). The light loop is unrolled
+// into one block per light (a rolled loop reads its uniform arrays per fragment
+// on llvmpipe), up to 64 lights of a kind; beyond, it stays a loop.
 
 #include "vtkPhongTestUtilities.h"
 
@@ -36,5 +38,25 @@ int TestPhongThirtyTwoLights(int argc, char* argv[])
   vtkPhongTest::Checks checks;
   const std::string signature = mapper->GetLastShaderSignature();
   checks.Expect(signature.find("point 32") != std::string::npos, "32 point lights: " + signature);
+  const std::string unrolled = mapper->GetLastFragmentShaderSource();
+  checks.Expect(unrolled.find("const int i = 31;") != std::string::npos &&
+      unrolled.find("for (int i = 0;") == std::string::npos,
+    "32 lights: the light loop is unrolled");
+
+  vtkPhongTest::Scene many(16, 16);
+  many.Renderer->AutomaticLightCreationOff();
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  for (int i = 0; i < 65; ++i)
+  {
+    const double position[3] = { std::cos(0.1 * i), std::sin(0.1 * i), 1.0 };
+    vtkPhongTest::AddLight(many, position, origin, white, false)->SetIntensity(0.01);
+  }
+  auto* manyMapper = vtkPhongPolyDataMapper::SafeDownCast(
+    vtkPhongTest::AddActor(many, vtkPhongTest::MakeSphere(8), material)->GetMapper());
+  many.Window->Render();
+  const std::string rolled = manyMapper->GetLastFragmentShaderSource();
+  checks.Expect(rolled.find("for (int i = 0; i < 65; ++i)") != std::string::npos &&
+      rolled.find("const int i = ") == std::string::npos,
+    "65 lights: the light loop stays a loop");
   return vtkPhongTest::Finish(argc, argv, scene.Window, checks.Passed);
 }
