@@ -64,11 +64,16 @@ bool vtkPhongDepthPrePass::Decide(int evaluatedLights, double triangles, vtkWind
   {
     usePrePass = true; // then probe the pre-pass
   }
-  else if (!this->Decided || this->Refreshing)
+  else if (!this->Decided || this->Refreshing || evaluatedLights != this->LightsAtDecision ||
+    triangles != this->TrianglesAtDecision)
   {
+    // A new decision: the first, after a refresh, or the work per fragment changed (the
+    // counts still hold: they depend on the view and the geometry, not on the lights).
     this->DecidedPrePass = Pays(this->ShadedCount, this->VisibleCount, triangles, evaluatedLights);
     this->Decided = true;
     this->Refreshing = false;
+    this->LightsAtDecision = evaluatedLights;
+    this->TrianglesAtDecision = triangles;
     this->SeenAtDecision = this->DecidedPrePass ? this->VisibleCount : this->ShadedCount;
     this->FramesSinceDecision = 0;
     usePrePass = this->DecidedPrePass;
@@ -180,4 +185,6 @@ void vtkPhongDepthPrePass::Reset()
   this->Decided = this->DecidedPrePass = this->Refreshing = false;
   this->SeenAtDecision = 0.0;
   this->FramesSinceDecision = 0;
+  this->LightsAtDecision = 0;
+  this->TrianglesAtDecision = 0.0;
 }

@@ -18,7 +18,8 @@
  * was measured on llvmpipe, docs/results/performance.md, "Depth complexity"). Each mode
  * counts one of the two numbers; the other is refreshed by one frame in the other mode when
  * the one counted moves by a quarter (the view or the data changed) or after
- * ReprobeInterval frames, and the decision is taken again.
+ * ReprobeInterval frames, and the decision is taken again; it is also taken again at once
+ * when the number of evaluated lights or of triangles changes.
  *
  * Counts arrive a frame late (the query results are read when available, never waited for).
  * Counting is skipped while another GL_SAMPLES_PASSED query is running (VTK's depth peeling).
@@ -95,6 +96,8 @@ private:
   bool Refreshing = false; // this frame runs in the other mode to refresh its count
   double SeenAtDecision = 0.0;
   int FramesSinceDecision = 0;
+  int LightsAtDecision = 0;
+  double TrianglesAtDecision = 0.0;
 };
 
 #endif

@@ -189,17 +189,21 @@ std::vector<bool> AutomaticFrames(PrePassScene& scene, vtkPhongPolyDataMapper* m
 
 // Automatic: a plain frame counts the fragments it shades, the next one probes with the
 // pre-pass, and from then on the pre-pass stays only while the lighting it saves outweighs
-// the depth pass (vtkPhongDepthPrePass::Pays). In a 640x640 view under 8 lights the nested
-// shells hide enough to pay; a sphere hides nothing behind itself.
+// the depth pass (vtkPhongDepthPrePass::Pays). In a 400x400 view under 8 lights the nested
+// shells hide enough to pay, under 1 light not; a sphere hides nothing behind itself.
 void CheckAutomatic(PrePassScene& scene, vtkPhongTest::Checks& checks)
 {
-  scene.View.Window->SetSize(640, 640);
+  scene.View.Window->SetSize(400, 400);
   const std::vector<bool> shells = AutomaticFrames(scene, scene.Shells, 4);
   const double complexity = scene.Shells->GetDepthComplexity();
   std::cout << "shells: " << complexity << " shaded fragments per visible one\n";
   checks.Expect(!shells[0] && shells[1], "automatic: the first frame is plain, the second probes");
   checks.Expect(complexity > 2.0, "the shells: more than 2 shaded fragments per visible one");
   checks.Expect(shells[2] && shells[3], "automatic, 8 lights, hidden layers: the pre-pass stays");
+  scene.SetLights(1);
+  const std::vector<bool> oneLight = AutomaticFrames(scene, scene.Shells, 1);
+  checks.Expect(!oneLight[0], "down to 1 light: the pre-pass is left at once");
+  scene.SetLights(8);
 
   scene.ShellActor->VisibilityOff();
   vtkActor* ball = vtkPhongTest::AddActor(scene.View, vtkPhongTest::MakeSphere(64, 12.0));
