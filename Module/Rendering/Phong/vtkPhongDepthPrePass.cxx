@@ -1,5 +1,15 @@
 #include "vtkPhongDepthPrePass.h"
 
+#include "vtkActor.h"
+#include "vtkInformation.h"
+#include "vtkMapper.h"
+#include "vtkOpenGLRenderPass.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkPhongPolyDataMapper.h"
+#include "vtkPhongShaderPlanner.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
 #include "vtk_glew.h"
 
 #include <cmath>
@@ -30,6 +40,108 @@ constexpr double ReprobeChange = 0.25;
 
 //------------------------------------------------------------------------------
 vtkPhongDepthPrePass::~vtkPhongDepthPrePass() = default; // queries die with their context
+
+//------------------------------------------------------------------------------
+bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMapper* mapper,
+  double triangles, int culledLights, const std::function<void(bool depthOnly)>& draw)
+{
+  using Mapper = vtkPhongPolyDataMapper;
+  const bool possible = mode != Mapper::DepthPrePassOff && CanUse(ren, act, triangles);
+  const bool counting =
+    possible && mode == Mapper::DepthPrePassAutomatic && CanMeasure(mapper, act);
+  const int evaluatedLights =
+    static_cast<int>(vtkPhongShaderPlanner::SwitchedOnLights(ren).size()) - culledLights;
+  const bool used = possible &&
+    (mode == Mapper::DepthPrePassOn ||
+      (counting && this->Decide(evaluatedLights, triangles, ren->GetRenderWindow())));
+  if (used)
+  {
+    this->DrawWithPrePass(ren, act, counting, draw);
+    return true;
+  }
+  if (counting)
+  {
+    this->BeginCount(Shaded);
+  }
+  draw(false);
+  if (counting)
+  {
+    this->EndCount();
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+// The depth pass draws every primitive with a program that computes no light and writes no
+// colour; the lit draw, with the same vertex shader (so the same depths) and VTK's GL_LEQUAL
+// test, then shades only the nearest surface of each pixel.
+void vtkPhongDepthPrePass::DrawWithPrePass(
+  vtkRenderer* ren, vtkActor* act, bool counting, const std::function<void(bool depthOnly)>& draw)
+{
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  {
+    vtkOpenGLState::ScopedglColorMask colorMask(state);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    // Back faces may be left out of the depth pass: the lit draw writes depth with GL_LEQUAL,
+    // so a back face nearer than every front face still wins there, and any subset of the
+    // surfaces gives the same picture. The depth pass then sets up half the triangles of a
+    // closed surface. The actor's own culling, when it has some, applies to both draws.
+    vtkProperty* property = act->GetProperty();
+    const bool actorCulls = property->GetBackfaceCulling() || property->GetFrontfaceCulling();
+    vtkOpenGLState::ScopedglEnableDisable culling(state, GL_CULL_FACE);
+    if (!actorCulls)
+    {
+      state->vtkglCullFace(GL_BACK);
+      state->vtkglEnable(GL_CULL_FACE);
+    }
+    draw(true);
+  }
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+  state->vtkglDepthFunc(GL_LEQUAL);
+  if (counting)
+  {
+    this->BeginCount(Visible);
+  }
+  draw(false);
+  if (counting)
+  {
+    this->EndCount();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongDepthPrePass::CanUse(vtkRenderer* ren, vtkActor* act, double triangles)
+{
+  vtkProperty* property = act->GetProperty();
+  return triangles > 0.0 && !act->IsRenderingTranslucentPolygonalGeometry() &&
+    !ren->GetSelector() && property->GetLighting() && property->GetOpacity() >= 1.0 &&
+    !property->GetEdgeVisibility() && !property->GetVertexVisibility() && ren->GetRenderWindow();
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongDepthPrePass::CanMeasure(vtkMapper* mapper, vtkActor* act)
+{
+  vtkProperty* property = act->GetProperty();
+  vtkInformation* keys = act->GetPropertyKeys();
+  if (property->GetRepresentation() != VTK_SURFACE || property->GetRenderPointsAsSpheres() ||
+    property->GetRenderLinesAsTubes() || (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())))
+  {
+    return false;
+  }
+  switch (vtkMapper::GetResolveCoincidentTopology())
+  {
+    case VTK_RESOLVE_SHIFT_ZBUFFER:
+      return vtkMapper::GetResolveCoincidentTopologyZShift() == 0.0;
+    case VTK_RESOLVE_POLYGON_OFFSET:
+    {
+      double factor = 0.0, units = 0.0;
+      mapper->GetCoincidentTopologyPolygonOffsetParameters(factor, units);
+      return factor == 0.0 && units == 0.0;
+    }
+    default:
+      return true;
+  }
+}
 
 //------------------------------------------------------------------------------
 bool vtkPhongDepthPrePass::Pays(

@@ -28,6 +28,11 @@
 #ifndef vtkPhongDepthPrePass_h
 #define vtkPhongDepthPrePass_h
 
+#include <functional> // for std::function
+
+class vtkActor;
+class vtkMapper;
+class vtkRenderer;
 class vtkWindow;
 
 class vtkPhongDepthPrePass
@@ -37,6 +42,31 @@ public:
   ~vtkPhongDepthPrePass();
   vtkPhongDepthPrePass(const vtkPhongDepthPrePass&) = delete;
   vtkPhongDepthPrePass& operator=(const vtkPhongDepthPrePass&) = delete;
+
+  /**
+   * Draw a mapper's primitives for the frame, plainly or with the pre-pass, as `mode` (a
+   * vtkPhongPolyDataMapper::DepthPrePassModes value) asks; returns whether the pre-pass was
+   * used. `draw(depthOnly)` is the mapper's own draw (VTK's RenderPieceDraw), with the
+   * depth-only program when depthOnly; `triangles` the polygons and strips it draws,
+   * `culledLights` the lights light culling leaves out of its lit program.
+   */
+  bool Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMapper* mapper, double triangles,
+    int culledLights, const std::function<void(bool depthOnly)>& draw);
+
+  /**
+   * Whether the pre-pass may draw the actor at all: opaque lit surfaces without edges or
+   * vertices drawn over them (VTK offsets those against the surface's depth, which the
+   * pre-pass already holds), outside selection.
+   */
+  static bool CanUse(vtkRenderer* ren, vtkActor* act, double triangles);
+
+  /**
+   * Whether the counts tell what the pre-pass saves (Automatic): the lit draw skips hidden
+   * fragments only when its fragment shader leaves the depth alone (no polygon offset
+   * written into gl_FragDepth, no imposters), and a render pass (shadows, SSAO) draws the
+   * actor several times a frame with programs of its own.
+   */
+  static bool CanMeasure(vtkMapper* mapper, vtkActor* act);
 
   /**
    * Whether the automatic mode draws this frame with the pre-pass, given the lights the lit
@@ -81,6 +111,8 @@ public:
   static constexpr int ReprobeInterval = 64;
 
 private:
+  void DrawWithPrePass(vtkRenderer* ren, vtkActor* act, bool counting,
+    const std::function<void(bool depthOnly)>& draw);
   void CollectCounts();
   void Reset();
 

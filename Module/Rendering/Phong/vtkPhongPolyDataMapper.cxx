@@ -2,26 +2,20 @@
 
 #include "vtkActor.h"
 #include "vtkCellData.h"
-#include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
-#include "vtkOpenGLRenderPass.h"
-#include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPhongClampedSetter.h"
 #include "vtkPhongDepthPrePass.h"
 #include "vtkPhongMapperCore.h"
-#include "vtkPhongShaderPlanner.h"
 #include "vtkPhongValidBlocks.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
-#include "vtk_glew.h"
 
 vtkStandardNewMacro(vtkPhongPolyDataMapper);
 
@@ -331,123 +325,27 @@ void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
-// Automatic counts the fragments of its draws (vtkPhongDepthPrePass) to decide.
+// Plainly or with the depth pre-pass (vtkPhongDepthPrePass decides and draws).
 void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
-  vtkPhongDepthPrePass& prePass = this->Internal->PrePass;
-  const bool possible = this->DepthPrePass != DepthPrePassOff && this->CanUseDepthPrePass(ren, act);
-  const bool counting = possible && this->DepthPrePass == DepthPrePassAutomatic &&
-    this->CanMeasureDepthPrePass(ren, act);
-  const int evaluatedLights =
-    static_cast<int>(vtkPhongShaderPlanner::SwitchedOnLights(ren).size()) -
-    this->GetNumberOfCulledLights();
-  this->UsedDepthPrePass = possible &&
-    (this->DepthPrePass == DepthPrePassOn ||
-      (counting &&
-        prePass.Decide(evaluatedLights,
-          static_cast<double>(
-            this->CurrentInput->GetNumberOfPolys() + this->CurrentInput->GetNumberOfStrips()),
-          ren->GetRenderWindow())));
-  if (this->UsedDepthPrePass)
-  {
-    this->RenderPieceDrawWithDepthPrePass(ren, act, counting);
-    return;
-  }
-  if (counting)
-  {
-    prePass.BeginCount(vtkPhongDepthPrePass::Shaded);
-  }
-  this->Superclass::RenderPieceDraw(ren, act);
-  if (counting)
-  {
-    prePass.EndCount();
-  }
-}
-
-//------------------------------------------------------------------------------
-// The depth pass draws every primitive with a program that computes no light and writes no
-// colour; the lit draw, with the same vertex shader (so the same depths) and VTK's GL_LEQUAL
-// test, then shades only the nearest surface of each pixel.
-void vtkPhongPolyDataMapper::RenderPieceDrawWithDepthPrePass(
-  vtkRenderer* ren, vtkActor* act, bool counting)
-{
-  vtkPhongDepthPrePass& prePass = this->Internal->PrePass;
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
-  {
-    vtkOpenGLState::ScopedglColorMask colorMask(state);
-    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    // Back faces may be left out of the depth pass: the lit draw writes depth with GL_LEQUAL,
-    // so a back face nearer than every front face still wins there, and any subset of the
-    // surfaces gives the same picture. The depth pass then sets up half the triangles of a
-    // closed surface. The actor's own culling, when it has some, applies to both draws.
-    vtkProperty* property = act->GetProperty();
-    const bool actorCulls = property->GetBackfaceCulling() || property->GetFrontfaceCulling();
-    vtkOpenGLState::ScopedglEnableDisable culling(state, GL_CULL_FACE);
-    if (!actorCulls)
+  vtkPolyData* input = this->CurrentInput;
+  const double triangles =
+    input ? static_cast<double>(input->GetNumberOfPolys() + input->GetNumberOfStrips()) : 0.0;
+  this->UsedDepthPrePass = this->Internal->PrePass.Draw(this->DepthPrePass, ren, act, this,
+    triangles, this->GetNumberOfCulledLights(),
+    [&](bool depthOnly)
     {
-      state->vtkglCullFace(GL_BACK);
-      state->vtkglEnable(GL_CULL_FACE);
-    }
-    this->Internal->DrawingDepthOnly = true;
-    // VTK's draw advances the primitive id offset of cell colours and normals as it goes:
-    // the lit draw must start where the depth pass did.
-    const int primitiveIdOffset = this->PrimitiveIDOffset;
-    this->Superclass::RenderPieceDraw(ren, act);
-    this->PrimitiveIDOffset = primitiveIdOffset;
-    this->Internal->DrawingDepthOnly = false;
-  }
-  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
-  state->vtkglDepthFunc(GL_LEQUAL);
-  if (counting)
-  {
-    prePass.BeginCount(vtkPhongDepthPrePass::Visible);
-  }
-  this->Superclass::RenderPieceDraw(ren, act);
-  if (counting)
-  {
-    prePass.EndCount();
-  }
-}
-
-//------------------------------------------------------------------------------
-// Only opaque lit surfaces without edges or vertices drawn over them (VTK offsets those
-// against the surface's depth, which the pre-pass already holds), outside selection.
-bool vtkPhongPolyDataMapper::CanUseDepthPrePass(vtkRenderer* ren, vtkActor* act)
-{
-  vtkProperty* property = act->GetProperty();
-  return !act->IsRenderingTranslucentPolygonalGeometry() && !ren->GetSelector() &&
-    property->GetLighting() && property->GetOpacity() >= 1.0 && !property->GetEdgeVisibility() &&
-    !property->GetVertexVisibility() && ren->GetRenderWindow() && this->CurrentInput &&
-    this->CurrentInput->GetNumberOfPolys() + this->CurrentInput->GetNumberOfStrips() > 0;
-}
-
-//------------------------------------------------------------------------------
-// Where the counts tell what the pre-pass saves: the lit draw skips hidden fragments only
-// when its fragment shader leaves the depth alone (no polygon offset written into
-// gl_FragDepth, no imposters), and a render pass (shadows, SSAO) draws the actor several
-// times a frame with programs of its own.
-bool vtkPhongPolyDataMapper::CanMeasureDepthPrePass(vtkRenderer*, vtkActor* act)
-{
-  vtkProperty* property = act->GetProperty();
-  vtkInformation* keys = act->GetPropertyKeys();
-  if (property->GetRepresentation() != VTK_SURFACE || property->GetRenderPointsAsSpheres() ||
-    property->GetRenderLinesAsTubes() || (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())))
-  {
-    return false;
-  }
-  switch (vtkMapper::GetResolveCoincidentTopology())
-  {
-    case VTK_RESOLVE_SHIFT_ZBUFFER:
-      return vtkMapper::GetResolveCoincidentTopologyZShift() == 0.0;
-    case VTK_RESOLVE_POLYGON_OFFSET:
-    {
-      double factor = 0.0, units = 0.0;
-      this->GetCoincidentTopologyPolygonOffsetParameters(factor, units);
-      return factor == 0.0 && units == 0.0;
-    }
-    default:
-      return true;
-  }
+      // VTK's draw advances the primitive id offset of cell colours and normals as it goes:
+      // the lit draw must start where the depth pass did.
+      const int primitiveIdOffset = this->PrimitiveIDOffset;
+      this->Internal->DrawingDepthOnly = depthOnly;
+      this->Superclass::RenderPieceDraw(ren, act);
+      this->Internal->DrawingDepthOnly = false;
+      if (depthOnly)
+      {
+        this->PrimitiveIDOffset = primitiveIdOffset;
+      }
+    });
 }
 
 //------------------------------------------------------------------------------

@@ -272,9 +272,6 @@ protected:
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
-  bool CanUseDepthPrePass(vtkRenderer* ren, vtkActor* act);
-  bool CanMeasureDepthPrePass(vtkRenderer* ren, vtkActor* act);
-  void RenderPieceDrawWithDepthPrePass(vtkRenderer* ren, vtkActor* act, bool counting);
 
   int DebugView = Final;
   int DebugLightIndex = 0;
