@@ -143,12 +143,10 @@ bool FloatEqual(vtkImageData* a, vtkImageData* b)
   return ra->GetNumberOfValues() == rb->GetNumberOfValues();
 }
 
-// Cell colours are fetched by primitive id from an offset VTK advances as it draws: the lit
-// draw after the depth pass must start from the same offset, or it fetches nothing and
-// discards every fragment.
-void CheckCellColours(PrePassScene& scene, vtkPhongTest::Checks& checks)
+// A sphere coloured in bands of cells (cell scalars).
+vtkSmartPointer<vtkPolyData> BandedSphere(double radius)
 {
-  auto banded = vtkPhongTest::MakeSphere(32, 12.0);
+  auto banded = vtkPhongTest::MakeSphere(32, radius);
   vtkNew<vtkUnsignedCharArray> bands;
   bands->SetNumberOfComponents(3);
   for (vtkIdType cell = 0; cell < banded->GetNumberOfCells(); ++cell)
@@ -157,6 +155,15 @@ void CheckCellColours(PrePassScene& scene, vtkPhongTest::Checks& checks)
     bands->InsertNextTypedTuple(colour[(cell / 7) % 2]);
   }
   banded->GetCellData()->SetScalars(bands);
+  return banded;
+}
+
+// Cell colours are fetched by primitive id from an offset VTK advances as it draws: the lit
+// draw after the depth pass must start from the same offset, or it fetches nothing and
+// discards every fragment.
+void CheckCellColours(PrePassScene& scene, vtkPhongTest::Checks& checks)
+{
+  auto banded = BandedSphere(12.0);
   scene.ShellActor->VisibilityOff();
   vtkActor* ball = vtkPhongTest::AddActor(scene.View, banded);
   auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(ball->GetMapper());
@@ -181,15 +188,7 @@ void CheckCellColours(PrePassScene& scene, vtkPhongTest::Checks& checks)
 // Automatic takes it up after its probe.
 void CheckComposite(PrePassScene& scene, vtkPhongTest::Checks& checks)
 {
-  auto banded = vtkPhongTest::MakeSphere(32, 5.0);
-  vtkNew<vtkUnsignedCharArray> bands;
-  bands->SetNumberOfComponents(3);
-  for (vtkIdType cell = 0; cell < banded->GetNumberOfCells(); ++cell)
-  {
-    const unsigned char colour[2][3] = { { 220, 60, 60 }, { 60, 90, 220 } };
-    bands->InsertNextTypedTuple(colour[(cell / 7) % 2]);
-  }
-  banded->GetCellData()->SetScalars(bands);
+  auto banded = BandedSphere(5.0);
   vtkNew<vtkMultiBlockDataSet> blocks;
   blocks->SetNumberOfBlocks(2);
   blocks->SetBlock(0, NestedShells());
