@@ -738,6 +738,10 @@ def render(build, phong):
         vtkphong.overrides.enable()
     else:
         vtkphong.overrides.disable()
+    # A case may set VTK's global coincident-topology mode; the next cases must not inherit
+    # it (VTK 9.3's tube imposters then read gl_FragDepth before writing it, and their
+    # pictures depend on how each shader happens to compile).
+    coincident = vtkMapper.GetResolveCoincidentTopology()
     scene = Scene(phong)
     build(scene)
     if phong and OPTIONS.depth_prepass:
@@ -750,6 +754,7 @@ def render(build, phong):
     errors = gl_errors(scene.window)
     checks.expect(not errors, "%s drew with no OpenGL error (%s)"
                   % ("vtkPhong" if phong else "stock VTK", errors))
+    vtkMapper.SetResolveCoincidentTopology(coincident)
     names = sorted({m.GetClassName() for m in scene.mappers})
     # Whether vtkPhong's lighting drew (not its fallback to VTK's): a signature is set.
     lit = all(m.GetLastShaderSignature() for m in scene.mappers
