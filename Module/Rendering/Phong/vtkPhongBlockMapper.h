@@ -28,9 +28,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
-#include "vtkPhongCompatibility.h"
 #include "vtkPhongCompositePolyDataMapper.h"
-#include "vtkPhongDepthPrePass.h"
+#include "vtkPhongCompatibility.h"
 #include "vtkPhongMapperCore.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -50,7 +49,6 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window) override
   {
-    this->PrePass.ReleaseGraphicsResources(window);
     this->Core->ReleaseGraphicsResources();
     this->Superclass::ReleaseGraphicsResources(window);
   }
@@ -92,7 +90,6 @@ protected:
       this->Core->Options.Specialize = parent->GetShaderSpecialization();
       this->Core->Options.LightCullingBound = parent->GetLightCullingBound();
     }
-    this->Core->Options.DepthOnly = this->DrawingDepthOnly;
     return this->Core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
   }
 
@@ -164,8 +161,9 @@ protected:
     this->Superclass::AppendOneBufferObject(ren, act, element, offset, colors, norms);
   }
 #else
-  void AppendOneBufferObject(vtkRenderer* ren, vtkActor* act, vtkCompositeMapperHelperData* element,
-    vtkIdType& offset, std::vector<unsigned char>& colors, std::vector<float>& norms) override
+  void AppendOneBufferObject(vtkRenderer* ren, vtkActor* act,
+    vtkCompositeMapperHelperData* element, vtkIdType& offset, std::vector<unsigned char>& colors,
+    std::vector<float>& norms) override
   {
     ValidBlockScope scope(element->Data, this->ValidBlock(element->Data));
     this->Superclass::AppendOneBufferObject(ren, act, element, offset, colors, norms);
@@ -195,27 +193,6 @@ protected:
     vtkPolyData* Original;
   };
 
-  // Plainly or with the depth pre-pass, as vtkPhongPolyDataMapper draws (the blocks' own
-  // draw resets its primitive id offset itself).
-  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override
-  {
-    auto* parent = vtkPhongCompositePolyDataMapper::SafeDownCast(this->Parent);
-    double triangles = 0.0;
-    for (vtkPolyData* block : this->GetRenderedList())
-    {
-      triangles += static_cast<double>(block->GetNumberOfPolys() + block->GetNumberOfStrips());
-    }
-    const int mode = parent ? parent->GetDepthPrePass() : vtkPhongPolyDataMapper::DepthPrePassOff;
-    this->Core->UsedDepthPrePass =
-      this->PrePass.Draw(mode, ren, act, this, triangles, this->Core->GetNumberOfCulledLights(),
-        [&](bool depthOnly)
-        {
-          this->DrawingDepthOnly = depthOnly;
-          this->Superclass::RenderPieceDraw(ren, act);
-          this->DrawingDepthOnly = false;
-        });
-  }
-
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override
   {
     this->Superclass::RenderPieceFinish(ren, act);
@@ -223,14 +200,9 @@ protected:
   }
 
   // Errors name the mapper the user made, not the block mapper.
-  vtkObject* Reporter()
-  {
-    return this->Parent ? static_cast<vtkObject*>(this->Parent) : this;
-  }
+  vtkObject* Reporter() { return this->Parent ? static_cast<vtkObject*>(this->Parent) : this; }
 
   vtkNew<vtkPhongMapperCore> Core;
-  vtkPhongDepthPrePass PrePass;
-  bool DrawingDepthOnly = false; // the depth pass of the pre-pass is being drawn
 
 private:
   vtkPhongBlockMapper(const vtkPhongBlockMapper&) = delete;

@@ -167,15 +167,6 @@ int vtkPhongCompositePolyDataMapper::GetNumberOfHelpers()
 }
 
 //------------------------------------------------------------------------------
-bool vtkPhongCompositePolyDataMapper::GetUsedDepthPrePass()
-{
-  this->Internal->Prune();
-  return std::any_of(this->Internal->Helpers.begin(), this->Internal->Helpers.end(),
-    [](const std::pair<vtkWeakPointer<vtkObject>, vtkPhongMapperCore*>& helper)
-    { return helper.second->UsedDepthPrePass; });
-}
-
-//------------------------------------------------------------------------------
 int vtkPhongCompositePolyDataMapper::GetShaderCompileCount()
 {
   return this->Internal->Sum(&vtkPhongMapperCore::GetShaderCompileCount);
@@ -210,8 +201,6 @@ void vtkPhongCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
-  os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
-  os << indent << "UsedDepthPrePass: " << (this->GetUsedDepthPrePass() ? "yes" : "no") << "\n";
   os << indent << "NumberOfHelpers: " << this->GetNumberOfHelpers() << "\n";
   os << indent << "ShaderCompileCount: " << this->GetShaderCompileCount() << "\n";
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";

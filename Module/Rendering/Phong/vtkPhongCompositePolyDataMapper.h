@@ -91,18 +91,6 @@ public:
 
   ///@{
   /**
-   * Depth pre-pass, as vtkPhongPolyDataMapper::SetDepthPrePass, for each helper's blocks.
-   * Default DepthPrePassAutomatic; one of vtkPhongPolyDataMapper::DepthPrePassModes (values
-   * are clamped). UsedDepthPrePass: whether a helper drew with it in its last draw.
-   */
-  vtkSetClampMacro(DepthPrePass, int, vtkPhongPolyDataMapper::DepthPrePassOff,
-    vtkPhongPolyDataMapper::DepthPrePassAutomatic);
-  vtkGetMacro(DepthPrePass, int);
-  bool GetUsedDepthPrePass();
-  ///@}
-
-  ///@{
-  /**
    * Shader statistics summed over the helpers (one helper per kind of block: with or
    * without scalars, normals, texture coordinates), as vtkPhongPolyDataMapper reports them
    * for itself; and the lighting signature of the last variant a helper built (empty when
@@ -153,7 +141,6 @@ protected:
   int DebugLightIndex = 0;
   bool ShaderSpecialization = true;
   double LightCullingBound = 0.5 / 255.0;
-  int DepthPrePass = vtkPhongPolyDataMapper::DepthPrePassAutomatic;
 
 private:
   vtkPhongCompositePolyDataMapper(const vtkPhongCompositePolyDataMapper&) = delete;

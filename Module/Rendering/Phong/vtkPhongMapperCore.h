@@ -116,12 +116,6 @@ public:
    * otherwise keep them all.
    */
   int MaximumNumberOfPrograms = 32;
-
-  /**
-   * Whether the last draw of the calling mapper used the depth pre-pass (the composite mapper
-   * reads it from its helpers' cores).
-   */
-  bool UsedDepthPrePass = false;
   int GetNumberOfReleasedPrograms() const;
   int GetNumberOfCompiledPrograms() const;
   ///@}

@@ -12,8 +12,6 @@
 #include "vtkContourFilter.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
-#include "vtkMultiBlockDataSet.h"
-#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
@@ -183,50 +181,6 @@ void CheckCellColours(PrePassScene& scene, vtkPhongTest::Checks& checks)
       std::to_string(vtkPhongTest::CountDifferentPixels(off, on, 0)) + " pixels differ)");
 }
 
-// The composite mapper (ParaView's Phong Surface) draws its blocks with the pre-pass too:
-// the shells and a cell-coloured sphere as two blocks, identical with and without it, and
-// Automatic takes it up after its probe.
-void CheckComposite(PrePassScene& scene, vtkPhongTest::Checks& checks)
-{
-  auto banded = BandedSphere(5.0);
-  vtkNew<vtkMultiBlockDataSet> blocks;
-  blocks->SetNumberOfBlocks(2);
-  blocks->SetBlock(0, NestedShells());
-  blocks->SetBlock(1, banded);
-  vtkNew<vtkPhongCompositePolyDataMapper> mapper;
-  mapper->SetInputDataObject(blocks);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetSpecular(0.4);
-  scene.ShellActor->VisibilityOff();
-  scene.View.Renderer->AddActor(actor);
-  scene.View.Window->SetSize(400, 400);
-
-  auto render = [&](int mode)
-  {
-    mapper->SetDepthPrePass(mode);
-    scene.View.Window->Render();
-    return vtkPhongTest::Snapshot(scene.View.Window);
-  };
-  const auto off = render(vtkPhongPolyDataMapper::DepthPrePassOff);
-  const auto on = render(vtkPhongPolyDataMapper::DepthPrePassOn);
-  checks.Expect(mapper->GetUsedDepthPrePass(), "composite, on: the pre-pass is used");
-  checks.Expect(vtkPhongTest::CountDifferentPixels(off, on, 0) == 0,
-    "composite: identical with and without the pre-pass (" +
-      std::to_string(vtkPhongTest::CountDifferentPixels(off, on, 0)) + " pixels differ)");
-  std::vector<bool> used;
-  mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassAutomatic);
-  for (int frame = 0; frame < 4; ++frame)
-  {
-    scene.View.Window->Render();
-    used.push_back(mapper->GetUsedDepthPrePass());
-  }
-  checks.Expect(used[1] && used[3], "composite, automatic, 8 lights: probed, then kept");
-  scene.View.Renderer->RemoveActor(actor);
-  scene.ShellActor->VisibilityOn();
-  scene.View.Window->SetSize(200, 200);
-}
-
 // The pre-pass used in each of `frames` frames drawn with Automatic.
 std::vector<bool> AutomaticFrames(PrePassScene& scene, vtkPhongPolyDataMapper* mapper, int frames)
 {
@@ -302,7 +256,6 @@ int TestPhongDepthPrePass(int, char*[])
     "float: identical with and without the pre-pass");
 
   CheckCellColours(scene, checks);
-  CheckComposite(scene, checks);
   CheckAutomatic(scene, checks);
 
   scene.ShellActor->GetProperty()->EdgeVisibilityOn();
