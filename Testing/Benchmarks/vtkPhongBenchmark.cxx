@@ -80,6 +80,19 @@ vtkSmartPointer<vtkPolyData> Sphere(int resolution)
   return sphere->GetOutput();
 }
 
+// A mesh file (CGAL's OFF) with point normals computed without splitting, named by its file
+// name: both mappers get the same normals.
+std::pair<std::string, vtkSmartPointer<vtkPolyData>> MeshWithNormals(const std::string& file)
+{
+  vtkNew<vtkPhongOFFReader> reader;
+  reader->SetFileName(file.c_str());
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(reader->GetOutputPort());
+  normals->SplittingOff();
+  normals->Update();
+  return { file.substr(file.find_last_of('/') + 1), normals->GetOutput() };
+}
+
 void AddLight(vtkRenderer* renderer, const double position[3], const double focalPoint[3],
   bool positional, double cone, const double color[3])
 {
@@ -123,13 +136,7 @@ void ShaderSection(const char* meshFile, bool quick)
   vtkSmartPointer<vtkPolyData> mesh = Sphere(quick ? 32 : 128);
   if (meshFile)
   {
-    vtkNew<vtkPhongOFFReader> reader;
-    reader->SetFileName(meshFile);
-    vtkNew<vtkPolyDataNormals> normals;
-    normals->SetInputConnection(reader->GetOutputPort());
-    normals->SplittingOff();
-    normals->Update();
-    mesh = normals->GetOutput();
+    mesh = MeshWithNormals(meshFile).second;
   }
   std::printf("%-34s %12s %12s\n", "", "vtkPhong", "stock");
   {
@@ -537,14 +544,7 @@ void MeshSection(const std::vector<std::string>& meshFiles, bool quick)
   }
   for (const auto& file : meshFiles)
   {
-    vtkNew<vtkPhongOFFReader> reader;
-    reader->SetFileName(file.c_str());
-    vtkNew<vtkPolyDataNormals> normals; // both mappers get the same normals
-    normals->SetInputConnection(reader->GetOutputPort());
-    normals->SplittingOff();
-    normals->Update();
-    const std::string name = file.substr(file.find_last_of('/') + 1);
-    meshes.emplace_back(name, normals->GetOutput());
+    meshes.push_back(MeshWithNormals(file));
   }
   for (const auto& mesh : meshes)
   {
@@ -614,13 +614,7 @@ void KindSection(const std::vector<std::string>& meshFiles, bool quick)
   meshes.emplace_back("sphere 256", Sphere(quick ? 32 : 256));
   for (const auto& file : meshFiles)
   {
-    vtkNew<vtkPhongOFFReader> reader;
-    reader->SetFileName(file.c_str());
-    vtkNew<vtkPolyDataNormals> normals; // both mappers get the same normals
-    normals->SetInputConnection(reader->GetOutputPort());
-    normals->SplittingOff();
-    normals->Update();
-    meshes.emplace_back(file.substr(file.find_last_of('/') + 1), normals->GetOutput());
+    meshes.push_back(MeshWithNormals(file));
   }
   std::vector<std::string> sets = { "1 headlight" };
   for (const char* kind : { "directional", "point", "spot", "mixed" })
