@@ -1,4 +1,4 @@
-"""Shared pieces of the vtkphong Python tests: arguments, image comparison.
+"""Shared pieces of the vtkphong Python tests: arguments, scene lights, image comparison.
 
 A picture is compared with Testing/Data/Baseline/<name>.png twice: by VTK's
 own regression test, and pixel by pixel (at most 24 pixels may differ by
@@ -13,7 +13,7 @@ import sys
 import numpy
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+from vtkmodules.vtkRenderingCore import vtkLight, vtkWindowToImageFilter
 from vtkmodules.vtkTestingRendering import vtkTesting
 
 STRICT_LEVELS = 6
@@ -31,6 +31,21 @@ def arguments():
     parser.add_argument("-B", dest="baselines", required=True)
     parser.add_argument("-T", dest="temporary", required=True)
     return parser.parse_args()
+
+
+def scene_light(renderer, position, color=(1.0, 1.0, 1.0), positional=False):
+    """A scene light at `position` aimed at the origin (a 60 degree spot when positional),
+    added to the renderer."""
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPosition(*position)
+    light.SetFocalPoint(0.0, 0.0, 0.0)
+    light.SetColor(*color)
+    light.SetPositional(positional)
+    if positional:
+        light.SetConeAngle(60.0)
+    renderer.AddLight(light)
+    return light
 
 
 def snapshot(window):

@@ -18,20 +18,10 @@ from vtkmodules.vtkFiltersTexture import vtkTextureMapToSphere
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkRenderWindow, vtkRenderer,
                                          vtkTexture)
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper
-from vtkphong_testing import Checks, arguments, snapshot, vtk_changed
+from vtkphong_testing import Checks, arguments, scene_light, snapshot, vtk_changed
 
 arguments()
 checks = Checks()
-
-
-def directional(renderer, position, color=(1.0, 1.0, 1.0)):
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.SetPosition(*position)
-    light.SetFocalPoint(0.0, 0.0, 0.0)
-    light.SetColor(*color)
-    renderer.AddLight(light)
-    return light
 
 
 def shiny(actor, renderer):
@@ -44,8 +34,8 @@ def shiny(actor, renderer):
 
 def two_lights(actor, renderer):
     shiny(actor, renderer)
-    directional(renderer, (1, 1, 1), (1.0, 0.8, 0.6))
-    directional(renderer, (-1, 0.5, 0.3), (0.3, 0.5, 1.0))
+    scene_light(renderer, (1, 1, 1), (1.0, 0.8, 0.6))
+    scene_light(renderer, (-1, 0.5, 0.3), (0.3, 0.5, 1.0))
 
 
 def positional(actor, renderer):
@@ -71,7 +61,7 @@ def renderer_ambient(actor, renderer):
 
 def light_colors(actor, renderer):
     shiny(actor, renderer)
-    light = directional(renderer, (1, 1, 1))
+    light = scene_light(renderer, (1, 1, 1))
     light.SetAmbientColor(0.3, 0.0, 0.0)
     light.SetSpecularColor(0.2, 0.2, 1.0)
 
@@ -79,8 +69,8 @@ def light_colors(actor, renderer):
 def shininess_zero(actor, renderer):
     shiny(actor, renderer)
     actor.GetProperty().SetSpecularPower(0.0)
-    directional(renderer, (1, 1, 1))
-    directional(renderer, (-1, 0, 0.2))
+    scene_light(renderer, (1, 1, 1))
+    scene_light(renderer, (-1, 0, 0.2))
 
 
 def textured(actor, renderer):

@@ -31,7 +31,7 @@ from vtkmodules.vtkFiltersSources import (vtkConeSource, vtkCubeSource, vtkLineS
                                           vtkPlaneSource,
                                           vtkRegularPolygonSource, vtkSphereSource)
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkGlyph3DMapper, vtkHardwareSelector,
-                                         vtkLight, vtkLightKit,
+                                         vtkLightKit,
                                          vtkMapper, vtkPolyDataMapper, vtkRenderWindow,
                                          vtkRenderer)
 from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkLightingMapPass,
@@ -43,7 +43,7 @@ from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkLightingMapPass,
 import vtkmodules.vtkRenderingCore as rendering_core
 import vtkmodules.vtkRenderingOpenGL2 as opengl2
 from vtkphong import vtkOpenMeshNormals, vtkPhongPolyDataMapper
-from vtkphong_testing import STRICT_LEVELS, STRICT_PIXEL_BUDGET, Checks, snapshot
+from vtkphong_testing import STRICT_LEVELS, STRICT_PIXEL_BUDGET, Checks, scene_light, snapshot
 
 SIZE = 160
 VTK_9_3 = (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()) >= (9, 3)
@@ -123,19 +123,6 @@ def sphere(resolution=48, center=(0.0, 0.0, 0.0), radius=0.5):
     source.SetCenter(*center)
     source.SetRadius(radius)
     return source
-
-
-def scene_light(renderer, position, color=(1.0, 1.0, 1.0), positional=False):
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.SetPosition(*position)
-    light.SetFocalPoint(0.0, 0.0, 0.0)
-    light.SetColor(*color)
-    light.SetPositional(positional)
-    if positional:
-        light.SetConeAngle(60.0)
-    renderer.AddLight(light)
-    return light
 
 
 def two_lights(renderer):
@@ -222,13 +209,8 @@ def edges_composite(scene):
 
 def shadows_composite(scene):
     """Shadows on composite data (ParaView draws surfaces with the composite mapper)."""
-    shadow_scene_geometry(scene)
     shiny(composite_actor(scene, ((0.0, 0.2, 0.6), (0.6, 0.0, -0.5)), 0.25), (0.3, 0.8, 0.3))
-    scene.renderer.AutomaticLightCreationOff()
-    shadow_spots(scene.renderer)
-    shadows = vtkShadowMapPass()
-    scene.renderer.SetPass(camera_over(shadows.GetShadowMapBakerPass(), shadows))
-    scene.window.Render()
+    shadow_scene(scene, shadow_spots)
 
 
 def lighting_map_luminance(scene):
