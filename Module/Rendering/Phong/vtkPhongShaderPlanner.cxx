@@ -128,19 +128,23 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
     return plan;
   }
   plan.Handled = true;
+  const bool twoSided = ren->GetTwoSidedLighting() != 0;
+  plan.FrontMaterial = front;
+  plan.BackMaterial =
+    (twoSided && actor->GetBackfaceProperty()) ? actor->GetBackfaceProperty() : front;
   if (options.DepthOnly)
   {
-    MakeDepthOnlyPlan(actor, ren, plan);
+    // The depth pre-pass draws what the lit draw will, with no feature: the fragment shader
+    // keeps VTK's colour (its opacity decides the discard), depth and clipping code and
+    // computes no light.
+    plan.DepthOnly = true;
+    plan.Signature = "| depth only";
     return plan;
   }
   plan.DebugView = options.DebugView;
   SortLightsByKind(switchedOn, plan);
   this->PickDebugLight(switchedOn, options, plan);
 
-  const bool twoSided = ren->GetTwoSidedLighting() != 0;
-  plan.FrontMaterial = front;
-  plan.BackMaterial =
-    (twoSided && actor->GetBackfaceProperty()) ? actor->GetBackfaceProperty() : front;
   if (options.DebugView == View::Final)
   {
     plan.CulledLights = vtkPhongLightCulling::Cull(ren, actor, plan.FrontMaterial,
@@ -163,19 +167,6 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   SetNormalFeatures(terms, state, perVertex, allFeatures, plan);
   plan.Signature = MakeSignature(plan, allFeatures);
   return plan;
-}
-
-//------------------------------------------------------------------------------
-// The depth pre-pass draws what the lit draw will, with no feature: the fragment shader keeps
-// VTK's colour (its opacity decides the discard), depth and clipping code and computes no light.
-void vtkPhongShaderPlanner::MakeDepthOnlyPlan(vtkActor* actor, vtkRenderer* ren, Plan& plan)
-{
-  plan.FrontMaterial = actor->GetProperty();
-  plan.BackMaterial = (ren->GetTwoSidedLighting() && actor->GetBackfaceProperty())
-    ? actor->GetBackfaceProperty()
-    : plan.FrontMaterial;
-  plan.DepthOnly = true;
-  plan.Signature = "| depth only";
 }
 
 //------------------------------------------------------------------------------

@@ -68,7 +68,6 @@ private:
 
   static bool IsLeftToVTK(vtkActor* actor, const PrimitiveState& state);
   static void SortLightsByKind(const std::vector<vtkLight*>& lights, Plan& plan);
-  static void MakeDepthOnlyPlan(vtkActor* actor, vtkRenderer* ren, Plan& plan);
   void PickDebugLight(const std::vector<vtkLight*>& lights, const Options& options, Plan& plan);
   void AddPlaceholderLights(Plan& plan) const;
   static Terms ChooseTerms(const Plan& plan, bool haveLights, bool allFeatures);
