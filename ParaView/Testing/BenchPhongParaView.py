@@ -10,14 +10,12 @@ still (non-LOD) frame, composited by IceT when there are several ranks.
 """
 
 import argparse
-import os
 import statistics
-import sys
 import time
 
-for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
-    if entry:
-        sys.path.insert(0, entry)
+from phong_paraview_testing import prefer_pythonpath
+
+prefer_pythonpath()
 
 from paraview import servermanager  # noqa: E402
 from paraview.simple import (AddLight, CreateRenderView, LoadPlugin, Render,  # noqa: E402

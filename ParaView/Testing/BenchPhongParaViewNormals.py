@@ -12,14 +12,12 @@ one piece per rank; PassArrays removes its normals), then renders one still fram
 """
 
 import argparse
-import os
 import statistics
-import sys
 import time
 
-for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
-    if entry:
-        sys.path.insert(0, entry)
+from phong_paraview_testing import prefer_pythonpath
+
+prefer_pythonpath()
 
 from paraview import servermanager  # noqa: E402
 from paraview.simple import (CreateRenderView, LoadPlugin, PassArrays, Render,  # noqa: E402

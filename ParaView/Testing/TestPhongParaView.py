@@ -22,14 +22,10 @@ directional, a point and a spot light. Checks, each failing with "ERROR:":
 import argparse
 import math
 import os
-import sys
 
-# pvpython puts the prefix it guesses from its libraries (/lib/python3/dist-packages,
-# the system VTK 9.1's vtkmodules on this platform) before PYTHONPATH; ParaView's own
-# Python package, unpacked from python3-paraview, must come first.
-for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
-    if entry:
-        sys.path.insert(0, entry)
+from phong_paraview_testing import fail, prefer_pythonpath, report
+
+prefer_pythonpath()
 
 from paraview import servermanager  # noqa: E402 (after the path fix)
 from paraview.simple import (  # noqa: E402
@@ -38,12 +34,6 @@ from paraview.simple import (  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
 SIZE = (400, 300)
-failures = []
-
-
-def fail(message):
-    failures.append(message)
-    print("ERROR: " + message)
 
 
 def read_png(path):
@@ -207,12 +197,7 @@ def main():
                  % (rank, bad[rank], checked[rank]))
     display.PhongDebugView = "Final"
 
-    if failures:
-        print("ERROR: %d check(s) failed" % len(failures))
-    else:
-        print("all checks passed")
+    report()
 
 
-# No sys.exit: pvbatch turns SystemExit into a GLX error at teardown (GLXBadContext) and
-# exit status 1. ctest reads the verdict from the output (ERROR: lines).
 main()

@@ -35,13 +35,10 @@ Checks, each failing with "ERROR:":
 
 import argparse
 import os
-import sys
 
-# pvpython puts the system VTK's vtkmodules before PYTHONPATH (docs/paraview.md): ParaView's
-# own Python package, unpacked from python3-paraview, must come first.
-for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
-    if entry:
-        sys.path.insert(0, entry)
+from phong_paraview_testing import fail, prefer_pythonpath, report
+
+prefer_pythonpath()
 
 from paraview import servermanager  # noqa: E402 (after the path fix)
 from paraview.simple import (  # noqa: E402
@@ -58,12 +55,6 @@ SIZE = (400, 400)
 SMOOTH_LIMITS = (2.0, 0.05)     # computed normals against the exact ones
 FACETED_LEAST = (3.0, 0.10)     # "Surface" (faceted) against "Phong Surface"
 SEAM_LIMITS = (8, 20)           # a pixel differs by more than 8 levels; at most 20 such
-failures = []
-
-
-def fail(message):
-    failures.append(message)
-    print("ERROR: " + message)
 
 
 def read_png(path):
@@ -177,6 +168,17 @@ def check_seam(label, picture, expected, ranks):
              % (label, differing))
 
 
+def check_against_surface(label, display, view, out, exact, ranks):
+    """Checks 1 and 2 (3 for the volume): the display drawn as "Phong Surface", then as
+    ParaView's "Surface", against the exact normals' picture. Returns the smooth picture."""
+    prefix = "" if label == "surface" else label + "-"
+    smooth = shot(view, out, "%ssmooth-%dranks" % (prefix, ranks))
+    display.SetRepresentationType("Surface")
+    faceted = shot(view, out, "%sfaceted-%dranks" % (prefix, ranks))
+    check_smooth(label, smooth, exact, faceted)
+    return smooth
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--plugin", required=True)
@@ -211,10 +213,7 @@ def main():
     exact_picture = shot(view, args.out, "exact-%dranks" % ranks)
     Hide(sphere, view)
     display = show(pieces, view, "Phong Surface", across=across)
-    smooth_picture = shot(view, args.out, "smooth-%dranks" % ranks)
-    display.SetRepresentationType("Surface")
-    faceted_picture = shot(view, args.out, "faceted-%dranks" % ranks)
-    check_smooth("surface", smooth_picture, exact_picture, faceted_picture)
+    check_against_surface("surface", display, view, args.out, exact_picture, ranks)
 
     # 4: the same with a highlight, against the serial picture.
     display.SetRepresentationType("Phong Surface")
@@ -228,20 +227,13 @@ def main():
 
     # 3: a tetrahedral volume without normals.
     grid = show(volume, view, "Phong Surface", across=across)
-    smooth_picture = shot(view, args.out, "volume-smooth-%dranks" % ranks)
-    grid.SetRepresentationType("Surface")
-    faceted_picture = shot(view, args.out, "volume-faceted-%dranks" % ranks)
-    check_smooth("volume", smooth_picture, exact_picture, faceted_picture)
+    smooth_picture = check_against_surface("volume", grid, view, args.out, exact_picture, ranks)
     # Serially the volume's computed normals draw the exact normals' picture within a level
     # (Max's weights are exact for points on a sphere): the exact picture is the serial one.
     check_seam("volume", smooth_picture, exact_picture, ranks)
     del exact
 
-    if failures:
-        print("ERROR: %d check(s) failed" % len(failures))
-    else:
-        print("all checks passed")
+    report()
 
 
-# No sys.exit: pvbatch turns SystemExit into a GLX error at teardown (TestPhongParaView.py).
 main()

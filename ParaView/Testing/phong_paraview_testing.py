@@ -1,0 +1,35 @@
+"""Shared pieces of the ParaView test and benchmark scripts, which pvbatch and pvpython run
+(pvbatch puts the script's folder first on sys.path, as python3 does).
+
+    from phong_paraview_testing import fail, prefer_pythonpath, report
+    prefer_pythonpath()  # before any paraview import
+"""
+
+import os
+import sys
+
+failures = []
+
+
+def prefer_pythonpath():
+    """pvpython puts the prefix it guesses from its libraries (/lib/python3/dist-packages,
+    the system VTK 9.1's vtkmodules on this platform) before PYTHONPATH; ParaView's own
+    Python package, unpacked from python3-paraview, must come first (docs/paraview.md)."""
+    for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
+        if entry:
+            sys.path.insert(0, entry)
+
+
+def fail(message):
+    """A failed check: an "ERROR:" line, which ctest's FAIL_REGULAR_EXPRESSION catches."""
+    failures.append(message)
+    print("ERROR: " + message)
+
+
+def report():
+    """The verdict as ctest reads it. No sys.exit: pvbatch turns SystemExit into a GLX error
+    at teardown (GLXBadContext) and exit status 1."""
+    if failures:
+        print("ERROR: %d check(s) failed" % len(failures))
+    else:
+        print("all checks passed")
