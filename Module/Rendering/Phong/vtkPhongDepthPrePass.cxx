@@ -49,11 +49,13 @@ bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMa
   const bool possible = mode != Mapper::DepthPrePassOff && CanUse(ren, act, triangles);
   const bool counting =
     possible && mode == Mapper::DepthPrePassAutomatic && CanMeasure(mapper, act);
-  const int evaluatedLights =
-    static_cast<int>(vtkPhongShaderPlanner::SwitchedOnLights(ren).size()) - culledLights;
-  const bool used = possible &&
-    (mode == Mapper::DepthPrePassOn ||
-      (counting && this->Decide(evaluatedLights, triangles, ren->GetRenderWindow())));
+  bool used = possible && mode == Mapper::DepthPrePassOn;
+  if (counting)
+  {
+    const int evaluatedLights =
+      static_cast<int>(vtkPhongShaderPlanner::SwitchedOnLights(ren).size()) - culledLights;
+    used = this->Decide(evaluatedLights, triangles, ren->GetRenderWindow());
+  }
   if (used)
   {
     this->DrawWithPrePass(ren, act, counting, draw);
