@@ -23,14 +23,13 @@ import argparse
 import math
 import os
 
-from phong_paraview_testing import fail, prefer_pythonpath, report
+from phong_paraview_testing import fail, load_plugin, prefer_pythonpath, report
 
 prefer_pythonpath()
 
-from paraview import servermanager  # noqa: E402 (after the path fix)
-from paraview.simple import (  # noqa: E402
-    AddLight, Connect, CreateRenderView, GetParaViewVersion, GetSettingsProxy, LoadPlugin, ProcessIdScalars,
-    Render, SaveScreenshot, Show, Sphere, Tessellate)
+from paraview.simple import (  # noqa: E402 (after the path fix)
+    AddLight, CreateRenderView, GetParaViewVersion, ProcessIdScalars, Render, SaveScreenshot, Show,
+    Sphere, Tessellate)
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
 SIZE = (400, 300)
@@ -87,14 +86,7 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
 
-    if args.server:
-        host, port = args.server.split(":")
-        Connect(host, int(port))
-        LoadPlugin(args.plugin, remote=True, ns=globals())
-        # Render on the server's ranks (and composite there), whatever the data size.
-        GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
-    LoadPlugin(args.plugin, remote=False, ns=globals())
-    ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+    ranks = load_plugin(args, globals())
     print("ParaView %s, %d rank(s)" % (GetParaViewVersion(), ranks))
 
     sphere = Sphere(ThetaResolution=128, PhiResolution=64, Radius=0.5)

@@ -36,14 +36,13 @@ Checks, each failing with "ERROR:":
 import argparse
 import os
 
-from phong_paraview_testing import fail, prefer_pythonpath, report
+from phong_paraview_testing import fail, load_plugin, prefer_pythonpath, report
 
 prefer_pythonpath()
 
-from paraview import servermanager  # noqa: E402 (after the path fix)
-from paraview.simple import (  # noqa: E402
-    AddLight, Connect, GetSettingsProxy, CreateRenderView, Delaunay3D, GetParaViewVersion, Hide, LoadPlugin,
-    RedistributeDataSet, Render, SaveScreenshot, Show, Sphere)
+from paraview.simple import (  # noqa: E402 (after the path fix)
+    AddLight, CreateRenderView, Delaunay3D, GetParaViewVersion, Hide, RedistributeDataSet, Render,
+    SaveScreenshot, Show, Sphere)
 from paraview.simple import XMLPolyDataReader  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
@@ -190,14 +189,7 @@ def main():
     args = parser.parse_args()
     args.out = os.path.abspath(args.out)  # the server reads the sphere's file from there
     os.makedirs(args.out, exist_ok=True)
-    if args.server:
-        host, port = args.server.split(":")
-        Connect(host, int(port))
-        LoadPlugin(args.plugin, remote=True, ns=globals())
-        # Render on the server's ranks (and composite there), whatever the data size.
-        GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
-    LoadPlugin(args.plugin, remote=False, ns=globals())
-    ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+    ranks = load_plugin(args, globals())
     print("ParaView %s, %d rank(s)%s" % (GetParaViewVersion(), ranks,
                                          ", no ghost cells" if args.no_ghosts else ""))
 

@@ -20,6 +20,23 @@ def prefer_pythonpath():
             sys.path.insert(0, entry)
 
 
+def load_plugin(args, ns):
+    """Connect to the pvserver at args.server (HOST:PORT) when given, and load args.plugin on
+    the server and the client, into the namespace `ns` (the script's globals()). Returns
+    the number of ranks that hold the data."""
+    from paraview import servermanager
+    from paraview.simple import Connect, GetSettingsProxy, LoadPlugin
+
+    if args.server:
+        host, port = args.server.split(":")
+        Connect(host, int(port))
+        LoadPlugin(args.plugin, remote=True, ns=ns)
+        # Render on the server's ranks (and composite there), whatever the data size.
+        GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
+    LoadPlugin(args.plugin, remote=False, ns=ns)
+    return servermanager.ActiveConnection.GetNumberOfDataPartitions()
+
+
 def fail(message):
     """A failed check: an "ERROR:" line, which ctest's FAIL_REGULAR_EXPRESSION catches."""
     failures.append(message)

@@ -146,12 +146,12 @@ def finish(scene):
 
 # ---- the cases: each builds its scene into `scene` -----------------------------------------
 
-def light_replacement(scene):
+def light_replacement(scene, replace_first=True):
     """A vtkShaderProperty replacement of //VTK::Light::Impl reading `diffuse`, `specular`."""
     actor = scene.actor(sphere())
     shiny(actor)
     actor.GetShaderProperty().AddFragmentShaderReplacement(
-        "//VTK::Light::Impl", True, CUBE_MAP_STYLE, False)
+        "//VTK::Light::Impl", replace_first, CUBE_MAP_STYLE, False)
     two_lights(scene.renderer)
     finish(scene)
 
@@ -164,12 +164,7 @@ def light_replacement_direct(scene):
 
 def light_replacement_after(scene):
     """The replacement applied after VTK's own substitutions (ReplaceFirst off)."""
-    actor = scene.actor(sphere())
-    shiny(actor)
-    actor.GetShaderProperty().AddFragmentShaderReplacement(
-        "//VTK::Light::Impl", False, CUBE_MAP_STYLE, False)
-    two_lights(scene.renderer)
-    finish(scene)
+    light_replacement(scene, replace_first=False)
 
 
 def composite_actor(scene, centers=((-0.6, 0.0, 0.0), (0.6, 0.0, 0.0)), radius=0.5):
