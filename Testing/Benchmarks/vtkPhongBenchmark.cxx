@@ -432,6 +432,25 @@ void PrintRatio(double ours, double other)
   std::printf(" %8.2fx", ours / other);
 }
 
+// The unlit floor, stock and vtkPhong on one mesh in their own window (the all-features
+// contender hidden), the mesh framed; 5 batches of 3 frames (quick: 2 of 1).
+struct MeshContest
+{
+  View Scene;
+  std::vector<vtkSmartPointer<vtkActor>> Actors;
+  Contest Race;
+
+  MeshContest(vtkPolyData* mesh, int width, int height, bool quick)
+    : Scene(width, height)
+    , Actors(MakeContenders(mesh, VTK_PHONG, false, Scene.Renderer))
+    , Race{ Scene.Window, Scene.Renderer, quick ? 2 : 5, quick ? 1 : 3,
+      { Actors[Unlit], Actors[Stock], Actors[Ours] } }
+  {
+    this->Actors[OursAllFeatures]->VisibilityOff();
+    this->Scene.Frame(mesh);
+  }
+};
+
 // Frame time by light set: the unlit floor, stock, vtkPhong, vtkPhong all-features.
 void LightSection(bool quick)
 {
@@ -574,17 +593,12 @@ void MeshSection(const std::vector<std::string>& meshFiles, bool quick)
       view.Window->WaitForCompletion();
       memory[which == Ours] = HeapInUseMiB() - before;
     }
-    View view(width, height);
-    auto actors = MakeContenders(mesh.second, VTK_PHONG, false, view.Renderer);
-    actors[OursAllFeatures]->VisibilityOff();
-    view.Frame(mesh.second);
-    Contest contest{ view.Window, view.Renderer, quick ? 2 : 5, quick ? 1 : 3,
-      { actors[Unlit], actors[Stock], actors[Ours] } };
+    MeshContest contest(mesh.second, width, height, quick);
     bool first = true;
     for (const std::string set : { "1 directional", "8 mixed" })
     {
-      SetLights(view.Renderer, set);
-      const auto t = contest.Run();
+      SetLights(contest.Scene.Renderer, set);
+      const auto t = contest.Race.Run();
       std::printf("%-24s %10lld %-13s %9.2f %9.2f %9.2f", first ? mesh.first.c_str() : "",
         static_cast<long long>(mesh.second->GetNumberOfPolys()), set.c_str(), 1e3 * t[Unlit],
         1e3 * t[Stock], 1e3 * t[Ours]);
@@ -626,16 +640,11 @@ void KindSection(const std::vector<std::string>& meshFiles, bool quick)
   }
   for (const auto& mesh : meshes)
   {
-    View view(width, height);
-    auto actors = MakeContenders(mesh.second, VTK_PHONG, false, view.Renderer);
-    actors[OursAllFeatures]->VisibilityOff();
-    view.Frame(mesh.second);
-    Contest contest{ view.Window, view.Renderer, quick ? 2 : 5, quick ? 1 : 3,
-      { actors[Unlit], actors[Stock], actors[Ours] } };
+    MeshContest contest(mesh.second, width, height, quick);
     for (const std::string& set : sets)
     {
-      SetLights(view.Renderer, set);
-      const auto t = contest.Run();
+      SetLights(contest.Scene.Renderer, set);
+      const auto t = contest.Race.Run();
       std::printf("%-22s %-15s %9.2f %9.2f %9.2f", set == sets.front() ? mesh.first.c_str() : "",
         set.c_str(), 1e3 * t[Unlit], 1e3 * t[Stock], 1e3 * t[Ours]);
       PrintRatio(t[Ours], t[Stock]);
