@@ -655,6 +655,43 @@ void KindSection(const std::vector<std::string>& meshFiles, bool quick)
   }
 }
 
+// The depth-complexity contest: the unlit floor, stock, and vtkPhong without the pre-pass,
+// with it on (every triangle in its depth pass, then occlusion culled) and automatic.
+struct ShellContenders
+{
+  ShellContenders(vtkPolyData* mesh, vtkRenderer* renderer)
+  {
+    auto stock = MakeContenders(mesh, VTK_PHONG, false, renderer);
+    this->Actors = { stock[Unlit], stock[Stock] };
+    using Mapper = vtkPhongPolyDataMapper;
+    const int modes[4] = { Mapper::DepthPrePassOff, Mapper::DepthPrePassOn,
+      Mapper::DepthPrePassOn, Mapper::DepthPrePassAutomatic };
+    for (int k = 0; k < 4; ++k)
+    {
+      vtkNew<Mapper> mapper;
+      mapper->SetInputData(mesh);
+      mapper->SetDepthPrePass(modes[k]);
+      mapper->SetDepthPrePassOcclusionCulling(k != 1);
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->SetProperty(stock[Ours]->GetProperty());
+      actor->VisibilityOff();
+      renderer->AddActor(actor);
+      this->Actors.push_back(actor);
+      this->Mappers.push_back(mapper);
+    }
+    for (const auto& actor : stock)
+    {
+      if (actor != stock[Unlit] && actor != stock[Stock])
+      {
+        renderer->RemoveActor(actor);
+      }
+    }
+  }
+  std::vector<vtkSmartPointer<vtkActor>> Actors;
+  std::vector<vtkSmartPointer<vtkPhongPolyDataMapper>> Mappers;
+};
+
 // Nested closed shells: contours 200, 209, ..., 263 of vtkRTAnalyticSource (81^3 samples),
 // appended inner shell first or outer shell first, or the outer shell alone.
 vtkSmartPointer<vtkPolyData> Shells(int count, bool innerFirst)
@@ -677,68 +714,62 @@ vtkSmartPointer<vtkPolyData> Shells(int count, bool innerFirst)
 
 // Depth complexity: the lighting's share of the frame (frame minus the same geometry's unlit
 // floor) for 8 nested shells in either order against the outer shell alone, under 1
-// directional and 8 mixed lights: stock, vtkPhong without, with and with the automatic depth
-// pre-pass (whether Automatic used it, and the depth complexity it measured).
+// directional and 8 mixed lights: stock, vtkPhong without the pre-pass, with it on (its depth
+// pass drawing every triangle, then only those seen in the last frame) and automatic (whether
+// Automatic used it, and the depth complexity it measured).
 void ShellSection(bool quick)
 {
   const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
   std::printf("\n== Depth complexity: 8 nested shells (%dx%d; ms) ==\n", width, height);
-  std::printf("%-20s %-14s %8s %8s %8s %8s %8s %8s %8s %8s %8s %6s\n", "geometry", "lights",
-    "unlit", "stock", "ours", "ours+pre", "auto", "stk lit", "ours lit", "pre lit", "auto lit",
-    "depth");
+  std::printf("%-18s %-13s %6s %6s %6s %6s %6s %6s %7s %7s %7s %7s %7s %9s\n", "geometry",
+    "lights", "unlit", "stock", "ours", "pre", "culled", "auto", "stk lit", "our lit",
+    "pre lit", "cul lit", "aut lit", "depth");
   const char* names[] = { "outer shell alone", "8, inner first", "8, outer first" };
   for (const char* set : { "1 directional", "8 mixed" })
   {
-    double outer[4] = { 0.0, 0.0, 0.0, 0.0 };
+    double outer[5] = { 0.0, 0.0, 0.0, 0.0, 0.0 };
     for (int which = 0; which < 3; ++which)
     {
       auto mesh = which == 0 ? Shells(1, false) : Shells(8, which == 1);
       View view(width, height);
-      auto actors = MakeContenders(mesh, VTK_PHONG, false, view.Renderer);
-      // The all-features slot becomes vtkPhong with the pre-pass always on, the plain one
-      // has it off, and a fifth actor, a copy of the plain one, has it automatic.
-      auto* plain = vtkPhongPolyDataMapper::SafeDownCast(actors[Ours]->GetMapper());
-      auto* prepass = vtkPhongPolyDataMapper::SafeDownCast(actors[OursAllFeatures]->GetMapper());
-      plain->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
-      prepass->SetShaderSpecialization(true);
-      prepass->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOn);
-      vtkNew<vtkPhongPolyDataMapper> automatic;
-      automatic->SetInputData(mesh);
-      automatic->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassAutomatic);
-      vtkNew<vtkActor> automaticActor;
-      automaticActor->SetMapper(automatic);
-      automaticActor->SetProperty(actors[Ours]->GetProperty());
-      view.Renderer->AddActor(automaticActor);
+      ShellContenders contenders(mesh, view.Renderer);
       view.Frame(Shells(1, false));
       SetLights(view.Renderer, set);
       Contest contest{ view.Window, view.Renderer, quick ? 2 : 5, quick ? 1 : 3, {} };
-      for (const auto& actor : actors)
+      for (const auto& actor : contenders.Actors)
       {
         contest.Actors.push_back(actor);
       }
-      contest.Actors.push_back(automaticActor);
       const auto t = contest.Run();
-      const double lit[4] = { t[Stock] - t[Unlit], t[Ours] - t[Unlit],
-        t[OursAllFeatures] - t[Unlit], t[4] - t[Unlit] };
-      std::printf("%-20s %-14s %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %5.2f%s\n",
-        names[which], set, 1e3 * t[Unlit], 1e3 * t[Stock], 1e3 * t[Ours], 1e3 * t[OursAllFeatures],
-        1e3 * t[4], 1e3 * lit[0], 1e3 * lit[1], 1e3 * lit[2], 1e3 * lit[3],
-        automatic->GetDepthComplexity(), automatic->GetUsedDepthPrePass() ? "+" : "");
+      double lit[5];
+      for (int k = 0; k < 5; ++k)
+      {
+        lit[k] = t[k + 1] - t[0];
+      }
+      vtkPhongPolyDataMapper* automatic = contenders.Mappers.back();
+      std::printf("%-18s %-13s %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %7.1f %7.1f %7.1f %7.1f "
+                  "%7.1f %4.2f %3.0f%%%s\n",
+        names[which], set, 1e3 * t[0], 1e3 * t[1], 1e3 * t[2], 1e3 * t[3], 1e3 * t[4],
+        1e3 * t[5], 1e3 * lit[0], 1e3 * lit[1], 1e3 * lit[2], 1e3 * lit[3], 1e3 * lit[4],
+        automatic->GetDepthComplexity(),
+        100.0 * contenders.Mappers[2]->GetDepthPassTriangles() / mesh->GetNumberOfPolys(),
+        automatic->GetUsedDepthPrePass() ? "+" : "");
       if (which == 0)
       {
-        std::copy(lit, lit + 4, outer);
+        std::copy(lit, lit + 5, outer);
       }
       else
       {
-        std::printf("%-35s %8s %8s %8s %8s %8s %7.2fx %7.2fx %7.2fx %7.2fx\n",
-          "  lit / outer's lit", "", "", "", "", "", lit[0] / outer[0], lit[1] / outer[1],
-          lit[2] / outer[2], lit[3] / outer[3]);
+        std::printf("%-32s %41s %6.2fx %6.2fx %6.2fx %6.2fx %6.2fx\n", "  lit / outer's lit", "",
+          lit[0] / outer[0], lit[1] / outer[1], lit[2] / outer[2], lit[3] / outer[3],
+          lit[4] / outer[4]);
       }
       std::fflush(stdout);
     }
   }
-  std::printf("(depth: fragments a plain draw shades per visible one, as Automatic measured;"
-              " +: Automatic used the pre-pass in the last frame)\n");
+  std::printf("(depth: fragments a plain draw shades per visible one, as Automatic measured, and"
+              " the share of the triangles the culled depth pass drew; +: Automatic used the"
+              " pre-pass in the last frame)\n");
 }
 
 // Light culling: four spheres on a 2 x 2 grid, each with 16 of 64 point lights close in

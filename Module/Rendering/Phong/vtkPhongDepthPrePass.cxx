@@ -43,7 +43,8 @@ vtkPhongDepthPrePass::~vtkPhongDepthPrePass() = default; // queries die with the
 
 //------------------------------------------------------------------------------
 bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMapper* mapper,
-  double triangles, int culledLights, const std::function<void(bool depthOnly)>& draw)
+  double triangles, double depthTriangles, int culledLights,
+  const std::function<void(bool depthOnly)>& draw)
 {
   using Mapper = vtkPhongPolyDataMapper;
   const bool possible = mode != Mapper::DepthPrePassOff && CanUse(ren, act, triangles);
@@ -54,7 +55,7 @@ bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMa
   {
     const int evaluatedLights =
       static_cast<int>(vtkPhongShaderPlanner::SwitchedOnLights(ren).size()) - culledLights;
-    used = this->Decide(evaluatedLights, triangles, ren->GetRenderWindow());
+    used = this->Decide(evaluatedLights, triangles, depthTriangles, ren->GetRenderWindow());
   }
   if (used)
   {
@@ -156,7 +157,8 @@ bool vtkPhongDepthPrePass::Pays(
 }
 
 //------------------------------------------------------------------------------
-bool vtkPhongDepthPrePass::Decide(int evaluatedLights, double triangles, vtkWindow* window)
+bool vtkPhongDepthPrePass::Decide(
+  int evaluatedLights, double triangles, double depthTriangles, vtkWindow* window)
 {
   if (window != this->Window)
   {
@@ -183,7 +185,8 @@ bool vtkPhongDepthPrePass::Decide(int evaluatedLights, double triangles, vtkWind
   {
     // A new decision: the first, after a refresh, or the work per fragment changed (the
     // counts still hold: they depend on the view and the geometry, not on the lights).
-    this->DecidedPrePass = Pays(this->ShadedCount, this->VisibleCount, triangles, evaluatedLights);
+    this->DecidedPrePass =
+      Pays(this->ShadedCount, this->VisibleCount, depthTriangles, evaluatedLights);
     this->Decided = true;
     this->Refreshing = false;
     this->LightsAtDecision = evaluatedLights;

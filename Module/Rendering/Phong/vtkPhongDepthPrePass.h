@@ -48,10 +48,11 @@ public:
    * vtkPhongPolyDataMapper::DepthPrePassModes value) asks; returns whether the pre-pass was
    * used. `draw(depthOnly)` is the mapper's own draw (VTK's RenderPieceDraw), with the
    * depth-only program when depthOnly; `triangles` the polygons and strips it draws,
-   * `culledLights` the lights light culling leaves out of its lit program.
+   * `depthTriangles` those its depth pass draws (fewer where vtkPhongVisibleClusters leaves
+   * hidden ones out), `culledLights` the lights light culling leaves out of its lit program.
    */
   bool Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMapper* mapper, double triangles,
-    int culledLights, const std::function<void(bool depthOnly)>& draw);
+    double depthTriangles, int culledLights, const std::function<void(bool depthOnly)>& draw);
 
   /**
    * Whether the pre-pass may draw the actor at all: opaque lit surfaces without edges or
@@ -70,15 +71,15 @@ public:
 
   /**
    * Whether the automatic mode draws this frame with the pre-pass, given the lights the lit
-   * program evaluates per fragment and the triangles drawn. Call with a current context,
-   * once per draw.
+   * program evaluates per fragment, the triangles drawn and those the depth pass would draw.
+   * Call with a current context, once per draw.
    */
-  bool Decide(int evaluatedLights, double triangles, vtkWindow* window);
+  bool Decide(int evaluatedLights, double triangles, double depthTriangles, vtkWindow* window);
 
   /**
    * The break-even: whether the pre-pass pays for a draw whose plain version shades `shaded`
-   * fragments of which `visible` remain with the pre-pass, of `triangles` triangles, under
-   * `evaluatedLights` lights (the cost model is in vtkPhongDepthPrePass.cxx).
+   * fragments of which `visible` remain with the pre-pass, whose depth pass draws
+   * `triangles` triangles, under `evaluatedLights` lights (the cost model is in vtkPhongDepthPrePass.cxx).
    */
   static bool Pays(double shaded, double visible, double triangles, int evaluatedLights);
 

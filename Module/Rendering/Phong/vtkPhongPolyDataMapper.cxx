@@ -6,11 +6,14 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
+#include "vtkOpenGLIndexBufferObject.h"
+#include "vtkRenderWindow.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPhongClampedSetter.h"
 #include "vtkPhongDepthPrePass.h"
 #include "vtkPhongMapperCore.h"
 #include "vtkPhongValidBlocks.h"
+#include "vtkPhongVisibleClusters.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -32,6 +35,8 @@ struct vtkPhongPolyDataMapper::Internals
   // The depth pass of the pre-pass is being drawn (its program computes no light).
   bool DrawingDepthOnly = false;
   vtkPhongDepthPrePass PrePass;
+  // The triangles the depth pass draws: those seen in the last frame.
+  vtkPhongVisibleClusters Clusters;
 };
 
 //------------------------------------------------------------------------------
@@ -325,27 +330,76 @@ void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
-// Plainly or with the depth pre-pass (vtkPhongDepthPrePass decides and draws).
+// Plainly or with the depth pre-pass (vtkPhongDepthPrePass decides and draws), whose depth
+// pass may leave out the triangles hidden in the last frame (vtkPhongVisibleClusters).
 void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
   vtkPolyData* input = this->CurrentInput;
   const double triangles =
     input ? static_cast<double>(input->GetNumberOfPolys() + input->GetNumberOfStrips()) : 0.0;
+  vtkPhongVisibleClusters& clusters = this->Internal->Clusters;
+  const bool culling = this->CanCullDepthPass(ren, act);
+  const double depthTriangles = culling && clusters.GetNumberOfTriangles() > 0
+    ? triangles - clusters.GetNumberOfTriangles() + clusters.CollectVisibility()
+    : triangles;
+  this->DepthPassTriangles = 0.0;
   this->UsedDepthPrePass = this->Internal->PrePass.Draw(this->DepthPrePass, ren, act, this,
-    triangles, this->GetNumberOfCulledLights(),
+    triangles, depthTriangles, this->GetNumberOfCulledLights(),
     [&](bool depthOnly)
     {
       // VTK's draw advances the primitive id offset of cell colours and normals as it goes:
       // the lit draw must start where the depth pass did.
       const int primitiveIdOffset = this->PrimitiveIDOffset;
       this->Internal->DrawingDepthOnly = depthOnly;
-      this->Superclass::RenderPieceDraw(ren, act);
-      this->Internal->DrawingDepthOnly = false;
       if (depthOnly)
       {
+        const bool culled = culling &&
+          clusters.Update(ren->GetRenderWindow(), this->Primitives[PrimitiveTris].IBO, input,
+            this->VBOBuildTime.GetMTime());
+        this->DrawDepthPass(ren, act, culled);
         this->PrimitiveIDOffset = primitiveIdOffset;
       }
+      else
+      {
+        this->Superclass::RenderPieceDraw(ren, act);
+      }
+      this->Internal->DrawingDepthOnly = false;
     });
+}
+
+//------------------------------------------------------------------------------
+// The depth pass is VTK's draw with the depth-only program; culled, the triangles are those
+// of the clusters seen in the last frame, and a share of the hidden ones.
+void vtkPhongPolyDataMapper::DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool culled)
+{
+  if (!culled)
+  {
+    this->Superclass::RenderPieceDraw(ren, act);
+    this->DepthPassTriangles = this->CurrentInput
+      ? static_cast<double>(
+          this->CurrentInput->GetNumberOfPolys() + this->CurrentInput->GetNumberOfStrips())
+      : 0.0;
+    return;
+  }
+  this->DrawingVertices = false;
+  this->DrawingSelection = false;
+  this->UpdateShaders(this->Primitives[PrimitiveTris], ren, act);
+  this->Internal->Clusters.Draw(ren, act, this->VBOs->GetNumberOfTuples("vertexMC"));
+  this->DepthPassTriangles = this->Internal->Clusters.GetNumberOfTrianglesDrawn();
+}
+
+//------------------------------------------------------------------------------
+// Occlusion culling needs the triangles alone (no points, lines or strips drawn in the same
+// pass), drawn as a surface from the renderer's camera (a render pass may draw the actor from
+// a light's view), into the picture's depth buffer (no selection).
+bool vtkPhongPolyDataMapper::CanCullDepthPass(vtkRenderer* ren, vtkActor* act)
+{
+  const bool onlyTriangles = this->Primitives[PrimitiveTris].IBO->IndexCount > 0 &&
+    this->Primitives[PrimitivePoints].IBO->IndexCount == 0 &&
+    this->Primitives[PrimitiveLines].IBO->IndexCount == 0 &&
+    this->Primitives[PrimitiveTriStrips].IBO->IndexCount == 0;
+  return this->DepthPrePassOcclusionCulling && this->DepthPrePass != DepthPrePassOff &&
+    onlyTriangles && !ren->GetSelector() && vtkPhongDepthPrePass::CanMeasure(this, act);
 }
 
 //------------------------------------------------------------------------------
@@ -366,6 +420,7 @@ void vtkPhongPolyDataMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 void vtkPhongPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internal->PrePass.ReleaseGraphicsResources(window);
+  this->Internal->Clusters.ReleaseGraphicsResources(window);
   this->Internal->Core->ReleaseGraphicsResources();
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -386,6 +441,9 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "UsedDepthPrePass: " << (this->UsedDepthPrePass ? "yes" : "no") << "\n";
   os << indent << "DepthComplexity: " << this->Internal->PrePass.GetDepthComplexity() << "\n";
+  os << indent << "DepthPrePassOcclusionCulling: "
+     << (this->DepthPrePassOcclusionCulling ? "On" : "Off") << "\n";
+  os << indent << "DepthPassTriangles: " << this->DepthPassTriangles << "\n";
   os << indent << "MaximumNumberOfShaderPrograms: " << this->MaximumNumberOfShaderPrograms << "\n";
   os << indent << "Lighting:\n";
   this->Internal->Core->PrintSelf(os, indent.GetNextIndent());
@@ -405,6 +463,7 @@ void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
     this->SetShaderSpecialization(phong->GetShaderSpecialization());
     this->SetLightCullingBound(phong->GetLightCullingBound());
     this->SetDepthPrePass(phong->GetDepthPrePass());
+    this->SetDepthPrePassOcclusionCulling(phong->GetDepthPrePassOcclusionCulling());
     this->SetMaximumNumberOfShaderPrograms(phong->GetMaximumNumberOfShaderPrograms());
   }
   this->Superclass::ShallowCopy(mapper);

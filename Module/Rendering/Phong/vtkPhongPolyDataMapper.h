@@ -203,6 +203,26 @@ public:
 
   ///@{
   /**
+   * Occlusion culling of the depth pre-pass (default on): the depth pass only has to hold
+   * the nearest surfaces, so it leaves out the triangles hidden in the last frame. The
+   * triangles are cut into up to 256 spatially compact clusters (never mixing large
+   * connected components, such as nested contours); the depth pass draws the clusters seen,
+   * nearest first, each counted by an occlusion query (read a frame later), and leaves out
+   * those none of whose fragments passed; every 16 frames it draws each hidden cluster again
+   * to see whether it came into view. The lit draw still draws every triangle, so a cluster
+   * that comes into view costs frames of overdraw, never a wrong pixel. It applies to inputs
+   * of polygons only (no vertices, lines or strips), drawn as surfaces, outside render
+   * passes (vtkPhongVisibleClusters.h). DepthPassTriangles: the triangles the last depth
+   * pass drew (0 without a pre-pass).
+   */
+  vtkSetMacro(DepthPrePassOcclusionCulling, bool);
+  vtkGetMacro(DepthPrePassOcclusionCulling, bool);
+  vtkBooleanMacro(DepthPrePassOcclusionCulling, bool);
+  vtkGetMacro(DepthPassTriangles, double);
+  ///@}
+
+  ///@{
+  /**
    * Shader statistics since the mapper was created (or last released its graphics resources).
    * ShaderCompileCount: how many times the mapper asked the render window for a program
    * whose source it had not used before; each costs a compile and link unless another mapper
@@ -284,6 +304,8 @@ protected:
   double LightCullingBound = 0.5 / 255.0;
   int DepthPrePass = DepthPrePassAutomatic;
   bool UsedDepthPrePass = false;
+  bool DepthPrePassOcclusionCulling = true;
+  double DepthPassTriangles = 0.0;
   int MaximumNumberOfShaderPrograms = 32;
 
 private:
@@ -291,6 +313,8 @@ private:
   void operator=(const vtkPhongPolyDataMapper&) = delete;
 
   vtkPolyData* GetValidInput(vtkPolyData* input);
+  bool CanCullDepthPass(vtkRenderer* ren, vtkActor* act);
+  void DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool culled);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -4,10 +4,13 @@
 // uses the pre-pass); with edges shown it is not used. Picking (vtkHardwareSelector) finds the same
 // cells either way. Automatic probes the pre-pass and keeps it where the lighting it saves
 // outweighs the depth pass (nested shells under 8 lights), not where nothing is hidden (a sphere).
+// Occlusion culling leaves the hidden shells out of the depth pass, and a view that turns at
+// once to what it left out is still exact.
 
 #include "vtkPhongReferenceTesting.h"
 
 #include "vtkAppendPolyData.h"
+#include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkContourFilter.h"
 #include "vtkHardwareSelector.h"
@@ -16,6 +19,8 @@
 #include "vtkRTAnalyticSource.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "vtkPhongDepthPrePass.h"
@@ -209,17 +214,25 @@ void CheckCGALMesh(const char* path, vtkPhongTest::Checks& checks)
   auto render = [&](int mode)
   {
     mapper->SetDepthPrePass(mode);
-    view.Window->Render();
+    for (int frame = 0; frame < 4; ++frame) // occlusion culling needs counts from a frame
+    {
+      view.Window->Render();
+    }
     return vtkPhongTest::Snapshot(view.Window);
   };
   const auto off = render(vtkPhongPolyDataMapper::DepthPrePassOff);
   const auto on = render(vtkPhongPolyDataMapper::DepthPrePassOn);
   const auto black = vtkPhongTest::Snapshot(view.Window);
   black->GetPointData()->GetScalars()->Fill(0.0);
+  const double triangles = static_cast<double>(reader->GetOutput()->GetNumberOfPolys());
+  std::cout << "bunny: the depth pass draws " << mapper->GetDepthPassTriangles() << " of "
+            << triangles << " triangles\n";
   checks.Expect(vtkPhongTest::CountDifferentPixels(off, black, 8) > 10000 &&
       vtkPhongTest::CountDifferentPixels(off, on, 0) == 0,
     "CGAL's bunny: drawn, and identical with the pre-pass (" +
       std::to_string(vtkPhongTest::CountDifferentPixels(off, on, 0)) + " pixels differ)");
+  checks.Expect(mapper->GetDepthPassTriangles() < 0.9 * triangles,
+    "CGAL's bunny: the depth pass leaves out the clusters its front hides");
   std::vector<bool> used;
   mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassAutomatic);
   for (int frame = 0; frame < 3; ++frame)
@@ -230,6 +243,89 @@ void CheckCGALMesh(const char* path, vtkPhongTest::Checks& checks)
   std::cout << "bunny: " << mapper->GetDepthComplexity() << " shaded fragments per visible one\n";
   checks.Expect(!used[0] && used[1] && mapper->GetDepthComplexity() > 1.0,
     "CGAL's bunny, automatic: probed in the second frame, some of it hidden");
+}
+
+// Two spheres of cells on the view axis in one polydata, the far one hidden behind the near
+// one, of 20000 triangles each (several occlusion-culling clusters).
+vtkSmartPointer<vtkPolyData> SpheresInLine()
+{
+  vtkNew<vtkAppendPolyData> append;
+  for (int k = 0; k < 2; ++k)
+  {
+    auto sphere = vtkPhongTest::MakeSphere(100, k == 0 ? 10.0 : 6.0);
+    vtkNew<vtkTransform> shift;
+    shift->Translate(0.0, 0.0, k == 0 ? 12.0 : -12.0);
+    vtkNew<vtkTransformPolyDataFilter> move;
+    move->SetInputData(sphere);
+    move->SetTransform(shift);
+    append->AddInputConnection(move->GetOutputPort());
+  }
+  append->Update();
+  return append->GetOutput();
+}
+
+// Occlusion culling of the depth pass (vtkPhongVisibleClusters): once the counts are in, the
+// depth pass of the nested shells leaves out the inner ones, and the pictures stay those
+// without the pre-pass. Two spheres in line, viewed from behind the near one, then at once
+// from the other end: the far sphere's clusters, hidden from the first view, are not in the
+// depth pass of the first frame of the second view, and that frame is still exact.
+void CheckOcclusionCulling(PrePassScene& scene, vtkPhongTest::Checks& checks)
+{
+  using Mapper = vtkPhongPolyDataMapper;
+  const double shellTriangles = static_cast<double>(NestedShells()->GetNumberOfPolys());
+  const auto off = scene.Render8Bit(Mapper::DepthPrePassOff);
+  const auto floatOff = scene.RenderFloat(Mapper::DepthPrePassOff);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    scene.Render8Bit(Mapper::DepthPrePassOn);
+  }
+  const auto on = scene.Render8Bit(Mapper::DepthPrePassOn);
+  const double culled = scene.Shells->GetDepthPassTriangles();
+  std::cout << "shells: the depth pass draws " << culled << " of " << shellTriangles
+            << " triangles\n";
+  checks.Expect(culled > 0.0 && culled < 0.6 * shellTriangles,
+    "culled: the depth pass leaves out the hidden shells");
+  checks.Expect(vtkPhongTest::CountDifferentPixels(off, on, 0) == 0 &&
+      FloatEqual(floatOff, scene.RenderFloat(Mapper::DepthPrePassOn)),
+    "culled: identical to no pre-pass, 8-bit and float");
+  scene.Shells->DepthPrePassOcclusionCullingOff();
+  scene.Render8Bit(Mapper::DepthPrePassOn);
+  checks.Expect(scene.Shells->GetDepthPassTriangles() == shellTriangles,
+    "occlusion culling off: the depth pass draws every triangle");
+  scene.Shells->DepthPrePassOcclusionCullingOn();
+
+  scene.ShellActor->VisibilityOff();
+  auto spheres = SpheresInLine();
+  vtkActor* line = vtkPhongTest::AddActor(scene.View, spheres);
+  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(line->GetMapper());
+  auto render = [&](int mode)
+  {
+    mapper->SetDepthPrePass(mode);
+    scene.View.Window->Render();
+    return vtkPhongTest::Snapshot(scene.View.Window);
+  };
+  for (int frame = 0; frame < 4; ++frame)
+  {
+    render(Mapper::DepthPrePassOn);
+  }
+  const double seenFromFront = mapper->GetDepthPassTriangles();
+  vtkCamera* camera = scene.View.Renderer->GetActiveCamera();
+  camera->Azimuth(180.0);
+  scene.View.Renderer->ResetCameraClippingRange();
+  const auto turnedOn = render(Mapper::DepthPrePassOn);
+  const auto turnedOff = render(Mapper::DepthPrePassOff);
+  const double triangles = static_cast<double>(spheres->GetNumberOfPolys());
+  std::cout << "spheres in line: the depth pass drew " << seenFromFront << " of " << triangles
+            << " triangles\n";
+  checks.Expect(seenFromFront < 0.6 * triangles, "spheres in line: the far one is left out");
+  checks.Expect(vtkPhongTest::CountDifferentPixels(turnedOn, turnedOff, 0) == 0,
+    "turned around at once: the first frame is identical to no pre-pass (" +
+      std::to_string(vtkPhongTest::CountDifferentPixels(turnedOn, turnedOff, 0)) +
+      " pixels differ)");
+  camera->Azimuth(180.0);
+  scene.View.Renderer->ResetCameraClippingRange();
+  scene.View.Renderer->RemoveActor(line);
+  scene.ShellActor->VisibilityOn();
 }
 
 // The pre-pass used in each of `frames` frames drawn with Automatic.
@@ -313,6 +409,7 @@ int TestPhongDepthPrePass(int argc, char* argv[])
     "float: identical with and without the pre-pass");
 
   CheckCellColours(scene, checks);
+  CheckOcclusionCulling(scene, checks);
   CheckAutomatic(scene, checks);
 
   scene.ShellActor->GetProperty()->EdgeVisibilityOn();

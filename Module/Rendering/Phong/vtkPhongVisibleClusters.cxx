@@ -1,0 +1,426 @@
+#include "vtkPhongVisibleClusters.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLIndexBufferObject.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+#include <utility>
+
+namespace
+{
+bool IsFinite(const double p[3])
+{
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+void EmptyBounds(double bounds[6])
+{
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    bounds[2 * axis] = VTK_DOUBLE_MAX;
+    bounds[2 * axis + 1] = -VTK_DOUBLE_MAX;
+  }
+}
+
+// The least view depth of the corners of bounds, `row` the model-to-view matrix's z row.
+double NearestDepth(const double bounds[6], const double row[4])
+{
+  if (!(bounds[0] <= bounds[1]))
+  {
+    return VTK_DOUBLE_MAX; // no finite point
+  }
+  double nearest = VTK_DOUBLE_MAX;
+  for (int c = 0; c < 8; ++c)
+  {
+    const double x = bounds[c & 1 ? 1 : 0], y = bounds[c & 2 ? 3 : 2], z = bounds[c & 4 ? 5 : 4];
+    nearest = std::min(nearest, -(row[0] * x + row[1] * y + row[2] * z + row[3]));
+  }
+  return nearest;
+}
+
+void AddToBounds(const double p[3], double bounds[6])
+{
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    bounds[2 * axis] = std::min(bounds[2 * axis], p[axis]);
+    bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], p[axis]);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkPhongVisibleClusters::~vtkPhongVisibleClusters() = default; // GL objects die with the context
+
+//------------------------------------------------------------------------------
+bool vtkPhongVisibleClusters::Update(vtkWindow* window, vtkOpenGLIndexBufferObject* triangles,
+  vtkPolyData* input, vtkMTimeType builtAt)
+{
+  if (window != this->Window)
+  {
+    this->Reset(); // a new context: the old one's objects went with it
+    this->Window = window;
+  }
+  if (builtAt == this->BuiltAt && triangles->IndexCount == this->IndexCount)
+  {
+    return !this->Clusters.empty();
+  }
+  this->BuiltAt = builtAt;
+  this->IndexCount = triangles->IndexCount;
+  this->Clusters.clear();
+  this->Counting = false;
+  this->Triangles = this->TrianglesDrawn = 0.0;
+  std::vector<unsigned int> indices;
+  if (!input || !input->GetPoints() || !this->ReadIndices(triangles, indices))
+  {
+    return false;
+  }
+  const vtkIdType points = input->GetNumberOfPoints();
+  if (std::any_of(indices.begin(), indices.end(),
+        [points](unsigned int index) { return static_cast<vtkIdType>(index) >= points; }))
+  {
+    return false; // the buffer's vertices are not the input's points
+  }
+  this->Build(indices, input);
+  return !this->Clusters.empty();
+}
+
+//------------------------------------------------------------------------------
+// The indices exactly as VTK uploaded them (polygons triangulated, invalid cells collapsed).
+bool vtkPhongVisibleClusters::ReadIndices(
+  vtkOpenGLIndexBufferObject* triangles, std::vector<unsigned int>& indices)
+{
+  const size_t count = triangles->IndexCount;
+  if (count == 0 || count % 3 != 0 || !triangles->GetHandle())
+  {
+    return false;
+  }
+  indices.resize(count);
+  glBindBuffer(GL_COPY_READ_BUFFER, triangles->GetHandle());
+  glGetBufferSubData(GL_COPY_READ_BUFFER, 0, count * sizeof(unsigned int), indices.data());
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Clusters never mix connected components that are large enough to fill one (nested
+// contours are separate components, and a cluster holding parts of two shows as long as the
+// outer part does). Within a component, or a run of small ones, the triangles are split at
+// the median of their centroids along the longest axis until each part is one cluster.
+void vtkPhongVisibleClusters::Build(const std::vector<unsigned int>& indices, vtkPolyData* input)
+{
+  const size_t triangles = indices.size() / 3;
+  const std::vector<std::uint32_t> components = ConnectedComponents(indices, input);
+  const std::vector<double> centroids = Centroids(indices, input);
+  std::vector<std::uint32_t> order(triangles);
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(),
+    [&components](std::uint32_t a, std::uint32_t b) { return components[a] < components[b]; });
+  const size_t target = std::max<size_t>(MinimumClusterTriangles,
+    (triangles + MaximumClusters - 1) / static_cast<size_t>(MaximumClusters));
+  for (size_t first = 0; first < triangles;)
+  {
+    size_t last = first;
+    while (last < triangles &&
+      (last == first || components[order[last]] == components[order[last - 1]] ||
+        4 * (last - first) < target))
+    {
+      ++last;
+    }
+    this->Split(order, centroids, first, last, target);
+    first = last;
+  }
+  std::vector<unsigned int> sorted(indices.size());
+  for (size_t t = 0; t < triangles; ++t)
+  {
+    std::copy_n(&indices[3 * order[t]], 3, &sorted[3 * t]);
+  }
+  this->ComputeBounds(sorted, input);
+  this->SortedTriangles->Upload(sorted, vtkOpenGLBufferObject::ElementArrayBuffer);
+  this->SortedTriangles->IndexCount = sorted.size();
+  this->Triangles = static_cast<double>(triangles);
+  if (this->Queries.size() < this->Clusters.size())
+  {
+    const size_t had = this->Queries.size();
+    this->Queries.resize(this->Clusters.size(), 0);
+    glGenQueries(static_cast<GLsizei>(this->Queries.size() - had), this->Queries.data() + had);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Triangles order[first, last) become clusters of at most `target`, halved at the median
+// centroid along the longest axis of their centroids' bounds.
+void vtkPhongVisibleClusters::Split(std::vector<std::uint32_t>& order,
+  const std::vector<double>& centroids, size_t first, size_t last, size_t target)
+{
+  if (last - first <= target)
+  {
+    Cluster cluster;
+    cluster.FirstIndex = static_cast<vtkIdType>(3 * first);
+    cluster.IndexCount = static_cast<vtkIdType>(3 * (last - first));
+    this->Clusters.push_back(cluster);
+    return;
+  }
+  double bounds[6];
+  EmptyBounds(bounds);
+  for (size_t t = first; t < last; ++t)
+  {
+    const double* centroid = &centroids[3 * order[t]];
+    if (IsFinite(centroid))
+    {
+      AddToBounds(centroid, bounds);
+    }
+  }
+  int longest = 0;
+  for (int axis = 1; axis < 3; ++axis)
+  {
+    if (bounds[2 * axis + 1] - bounds[2 * axis] > bounds[2 * longest + 1] - bounds[2 * longest])
+    {
+      longest = axis;
+    }
+  }
+  const size_t middle = first + (last - first) / 2;
+  // NaN centroids compare as the lowest, so the order stays strict and weak.
+  auto key = [&centroids, longest](std::uint32_t t)
+  {
+    const double x = centroids[3 * t + longest];
+    return std::isnan(x) ? -VTK_DOUBLE_MAX : x;
+  };
+  std::nth_element(order.begin() + first, order.begin() + middle, order.begin() + last,
+    [&key](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  this->Split(order, centroids, first, middle, target);
+  this->Split(order, centroids, middle, last, target);
+}
+
+//------------------------------------------------------------------------------
+// Each triangle's connected component (triangles sharing a point), numbered in order of
+// first appearance.
+std::vector<std::uint32_t> vtkPhongVisibleClusters::ConnectedComponents(
+  const std::vector<unsigned int>& indices, vtkPolyData* input)
+{
+  std::vector<vtkIdType> parent(input->GetNumberOfPoints());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&parent](vtkIdType p)
+  {
+    while (parent[p] != p)
+    {
+      parent[p] = parent[parent[p]];
+      p = parent[p];
+    }
+    return p;
+  };
+  for (size_t i = 0; i < indices.size(); i += 3)
+  {
+    const vtkIdType a = root(indices[i]);
+    for (int k = 1; k < 3; ++k)
+    {
+      const vtkIdType b = root(indices[i + k]);
+      parent[b] = a;
+    }
+  }
+  std::unordered_map<vtkIdType, std::uint32_t> numbers;
+  std::vector<std::uint32_t> components(indices.size() / 3);
+  for (size_t t = 0; t < components.size(); ++t)
+  {
+    const auto inserted =
+      numbers.emplace(root(indices[3 * t]), static_cast<std::uint32_t>(numbers.size()));
+    components[t] = inserted.first->second;
+  }
+  return components;
+}
+
+//------------------------------------------------------------------------------
+// Each triangle's centroid (x, y, z, x, y, z, ...).
+std::vector<double> vtkPhongVisibleClusters::Centroids(
+  const std::vector<unsigned int>& indices, vtkPolyData* input)
+{
+  vtkPoints* points = input->GetPoints();
+  std::vector<double> centroids(indices.size(), 0.0);
+  for (size_t i = 0; i < indices.size(); ++i)
+  {
+    double corner[3];
+    points->GetPoint(indices[i], corner);
+    double* centroid = &centroids[3 * (i / 3)];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      centroid[axis] += corner[axis] / 3.0;
+    }
+  }
+  return centroids;
+}
+
+//------------------------------------------------------------------------------
+// Each cluster's bounds over its finite points, for the draw order.
+void vtkPhongVisibleClusters::ComputeBounds(
+  const std::vector<unsigned int>& sorted, vtkPolyData* input)
+{
+  vtkPoints* points = input->GetPoints();
+  for (Cluster& cluster : this->Clusters)
+  {
+    EmptyBounds(cluster.Bounds);
+    for (vtkIdType i = cluster.FirstIndex; i < cluster.FirstIndex + cluster.IndexCount; ++i)
+    {
+      double p[3];
+      points->GetPoint(sorted[i], p);
+      if (IsFinite(p))
+      {
+        AddToBounds(p, cluster.Bounds);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongVisibleClusters::CollectVisibility()
+{
+  if (this->Counting)
+  {
+    std::vector<GLuint> samples(this->Clusters.size(), 0);
+    for (size_t k = 0; k < this->Clusters.size(); ++k)
+    {
+      if (!this->Clusters[k].Counted)
+      {
+        continue;
+      }
+      GLuint available = 0;
+      glGetQueryObjectuiv(this->Queries[k], GL_QUERY_RESULT_AVAILABLE, &available);
+      if (!available)
+      {
+        return this->TrianglesDrawn; // not in yet: keep the last frame's choice
+      }
+      glGetQueryObjectuiv(this->Queries[k], GL_QUERY_RESULT, &samples[k]);
+    }
+    for (size_t k = 0; k < this->Clusters.size(); ++k)
+    {
+      Cluster& cluster = this->Clusters[k];
+      if (cluster.Counted)
+      {
+        cluster.Seen = samples[k] > 0;
+        cluster.Counted = false;
+      }
+    }
+    this->Counting = false;
+  }
+  double seen = 0.0;
+  for (const Cluster& cluster : this->Clusters)
+  {
+    seen += cluster.Seen ? cluster.IndexCount / 3 : 0;
+  }
+  return seen;
+}
+
+//------------------------------------------------------------------------------
+// Seen clusters nearest first (what is drawn first hides what lies behind it, so a hidden
+// cluster drawn after its occluders counts no fragment), then the hidden clusters' share of
+// the round robin. Counting is skipped while another GL_SAMPLES_PASSED query runs.
+void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act, vtkIdType vertices)
+{
+  GLint active = 0;
+  glGetQueryiv(GL_SAMPLES_PASSED, GL_CURRENT_QUERY, &active);
+  const bool counting = active == 0 && !this->Counting;
+  this->SortedTriangles->Bind();
+  this->TrianglesDrawn = 0.0;
+  for (size_t k : this->DrawOrder(ren, act))
+  {
+    // A query costs (llvmpipe marks its start and end in every tile of the window): a seen
+    // cluster is counted every RecountInterval frames, a hidden one each time it is drawn.
+    const bool recount = !this->Clusters[k].Seen || (k + this->Frame) % RecountInterval == 0;
+    this->DrawCluster(k, vertices, counting && recount);
+  }
+  this->SortedTriangles->Release();
+  this->Counting = this->Counting || counting;
+  ++this->Frame;
+}
+
+//------------------------------------------------------------------------------
+// The seen clusters by the view depth of their bounds' nearest corner (of two nested
+// surfaces, the outer one's patch reaches nearer than the patch it hides behind it), then
+// the hidden ones to retest.
+std::vector<size_t> vtkPhongVisibleClusters::DrawOrder(vtkRenderer* ren, vtkActor* act)
+{
+  vtkNew<vtkMatrix4x4> modelToView;
+  vtkMatrix4x4::Multiply4x4(
+    ren->GetActiveCamera()->GetModelViewTransformMatrix(), act->GetMatrix(), modelToView);
+  const double* row = modelToView->GetData() + 8; // the view z row: depth is -z
+  std::vector<std::pair<double, size_t>> seen;
+  std::vector<size_t> hidden;
+  for (size_t k = 0; k < this->Clusters.size(); ++k)
+  {
+    if (this->Clusters[k].Seen)
+    {
+      seen.emplace_back(NearestDepth(this->Clusters[k].Bounds, row), k);
+    }
+    else
+    {
+      hidden.push_back(k);
+    }
+  }
+  std::sort(seen.begin(), seen.end());
+  std::vector<size_t> order;
+  for (const auto& cluster : seen)
+  {
+    order.push_back(cluster.second);
+  }
+  const size_t retests = (hidden.size() + RetestInterval - 1) / RetestInterval;
+  for (size_t i = 0; i < retests; ++i)
+  {
+    order.push_back(hidden[(this->NextRetest + i) % hidden.size()]);
+  }
+  this->NextRetest = hidden.empty() ? 0 : (this->NextRetest + retests) % hidden.size();
+  return order;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongVisibleClusters::DrawCluster(size_t k, vtkIdType vertices, bool counting)
+{
+  Cluster& cluster = this->Clusters[k];
+  if (counting)
+  {
+    glBeginQuery(GL_SAMPLES_PASSED, this->Queries[k]);
+  }
+  glDrawRangeElements(GL_TRIANGLES, 0, static_cast<GLuint>(vertices - 1),
+    static_cast<GLsizei>(cluster.IndexCount), GL_UNSIGNED_INT,
+    reinterpret_cast<const void*>(cluster.FirstIndex * sizeof(GLuint)));
+  if (counting)
+  {
+    glEndQuery(GL_SAMPLES_PASSED);
+    cluster.Counted = true;
+  }
+  this->TrianglesDrawn += cluster.IndexCount / 3;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongVisibleClusters::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (window && window == this->Window)
+  {
+    if (!this->Queries.empty())
+    {
+      glDeleteQueries(static_cast<GLsizei>(this->Queries.size()), this->Queries.data());
+    }
+    this->SortedTriangles->ReleaseGraphicsResources();
+  }
+  this->Reset();
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongVisibleClusters::Reset()
+{
+  this->Clusters.clear();
+  this->Queries.clear();
+  this->Counting = false;
+  this->NextRetest = 0;
+  this->Frame = 0;
+  this->BuiltAt = 0;
+  this->IndexCount = 0;
+  this->Window = nullptr;
+  this->Triangles = this->TrianglesDrawn = 0.0;
+}
