@@ -384,7 +384,7 @@ void vtkPhongPolyDataMapper::DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool
   this->DrawingVertices = false;
   this->DrawingSelection = false;
   this->UpdateShaders(this->Primitives[PrimitiveTris], ren, act);
-  this->Internal->Clusters.Draw(ren, act, this->VBOs->GetNumberOfTuples("vertexMC"));
+  this->Internal->Clusters.Draw(ren, act);
   this->DepthPassTriangles = this->Internal->Clusters.GetNumberOfTrianglesDrawn();
 }
 

@@ -76,6 +76,7 @@ bool vtkPhongVisibleClusters::Update(vtkWindow* window, vtkOpenGLIndexBufferObje
   this->BuiltAt = builtAt;
   this->IndexCount = triangles->IndexCount;
   this->Clusters.clear();
+  this->Groups.clear();
   this->Counting = false;
   this->Triangles = this->TrianglesDrawn = 0.0;
   std::vector<unsigned int> indices;
@@ -136,6 +137,7 @@ void vtkPhongVisibleClusters::Build(const std::vector<unsigned int>& indices, vt
       ++last;
     }
     this->Split(order, centroids, first, last, target);
+    this->Groups.emplace_back();
     first = last;
   }
   std::vector<unsigned int> sorted(indices.size());
@@ -164,6 +166,7 @@ void vtkPhongVisibleClusters::Split(std::vector<std::uint32_t>& order,
   if (last - first <= target)
   {
     Cluster cluster;
+    cluster.Group = this->Groups.size();
     cluster.FirstIndex = static_cast<vtkIdType>(3 * first);
     cluster.IndexCount = static_cast<vtkIdType>(3 * (last - first));
     this->Clusters.push_back(cluster);
@@ -258,7 +261,8 @@ std::vector<double> vtkPhongVisibleClusters::Centroids(
 }
 
 //------------------------------------------------------------------------------
-// Each cluster's bounds over its finite points, for the draw order.
+// Each cluster's and group's bounds over their finite points, for the draw order, and the
+// range of vertices each cluster uses, for the driver.
 void vtkPhongVisibleClusters::ComputeBounds(
   const std::vector<unsigned int>& sorted, vtkPolyData* input)
 {
@@ -266,6 +270,10 @@ void vtkPhongVisibleClusters::ComputeBounds(
   for (Cluster& cluster : this->Clusters)
   {
     EmptyBounds(cluster.Bounds);
+    const auto first = sorted.begin() + cluster.FirstIndex;
+    const auto range = std::minmax_element(first, first + cluster.IndexCount);
+    cluster.FirstVertex = *range.first;
+    cluster.LastVertex = *range.second;
     for (vtkIdType i = cluster.FirstIndex; i < cluster.FirstIndex + cluster.IndexCount; ++i)
     {
       double p[3];
@@ -273,6 +281,7 @@ void vtkPhongVisibleClusters::ComputeBounds(
       if (IsFinite(p))
       {
         AddToBounds(p, cluster.Bounds);
+        AddToBounds(p, this->Groups[cluster.Group].Bounds);
       }
     }
   }
@@ -321,7 +330,7 @@ double vtkPhongVisibleClusters::CollectVisibility()
 // Seen clusters nearest first (what is drawn first hides what lies behind it, so a hidden
 // cluster drawn after its occluders counts no fragment), then the hidden clusters' share of
 // the round robin. Counting is skipped while another GL_SAMPLES_PASSED query runs.
-void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act, vtkIdType vertices)
+void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act)
 {
   GLint active = 0;
   glGetQueryiv(GL_SAMPLES_PASSED, GL_CURRENT_QUERY, &active);
@@ -333,7 +342,7 @@ void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act, vtkIdType ve
     // A query costs (llvmpipe marks its start and end in every tile of the window): a seen
     // cluster is counted every RecountInterval frames, a hidden one each time it is drawn.
     const bool recount = !this->Clusters[k].Seen || (k + this->Frame) % RecountInterval == 0;
-    this->DrawCluster(k, vertices, counting && recount);
+    this->DrawCluster(k, counting && recount);
   }
   this->SortedTriangles->Release();
   this->Counting = this->Counting || counting;
@@ -341,22 +350,28 @@ void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act, vtkIdType ve
 }
 
 //------------------------------------------------------------------------------
-// The seen clusters by the view depth of their bounds' nearest corner (of two nested
-// surfaces, the outer one's patch reaches nearer than the patch it hides behind it), then
-// the hidden ones to retest.
+// The seen clusters by the view depth of the nearest corner of their group's bounds (of
+// nested contours, the outer one's bounds hold the inner ones': all of it is drawn first),
+// then of their own; then the hidden ones to retest.
 std::vector<size_t> vtkPhongVisibleClusters::DrawOrder(vtkRenderer* ren, vtkActor* act)
 {
   vtkNew<vtkMatrix4x4> modelToView;
   vtkMatrix4x4::Multiply4x4(
     ren->GetActiveCamera()->GetModelViewTransformMatrix(), act->GetMatrix(), modelToView);
   const double* row = modelToView->GetData() + 8; // the view z row: depth is -z
-  std::vector<std::pair<double, size_t>> seen;
+  std::vector<double> groupDepths(this->Groups.size());
+  for (size_t g = 0; g < this->Groups.size(); ++g)
+  {
+    groupDepths[g] = NearestDepth(this->Groups[g].Bounds, row);
+  }
+  std::vector<std::pair<std::pair<double, double>, size_t>> seen;
   std::vector<size_t> hidden;
   for (size_t k = 0; k < this->Clusters.size(); ++k)
   {
-    if (this->Clusters[k].Seen)
+    const Cluster& cluster = this->Clusters[k];
+    if (cluster.Seen)
     {
-      seen.emplace_back(NearestDepth(this->Clusters[k].Bounds, row), k);
+      seen.push_back({ { groupDepths[cluster.Group], NearestDepth(cluster.Bounds, row) }, k });
     }
     else
     {
@@ -379,14 +394,14 @@ std::vector<size_t> vtkPhongVisibleClusters::DrawOrder(vtkRenderer* ren, vtkActo
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongVisibleClusters::DrawCluster(size_t k, vtkIdType vertices, bool counting)
+void vtkPhongVisibleClusters::DrawCluster(size_t k, bool counting)
 {
   Cluster& cluster = this->Clusters[k];
   if (counting)
   {
     glBeginQuery(GL_SAMPLES_PASSED, this->Queries[k]);
   }
-  glDrawRangeElements(GL_TRIANGLES, 0, static_cast<GLuint>(vertices - 1),
+  glDrawRangeElements(GL_TRIANGLES, cluster.FirstVertex, cluster.LastVertex,
     static_cast<GLsizei>(cluster.IndexCount), GL_UNSIGNED_INT,
     reinterpret_cast<const void*>(cluster.FirstIndex * sizeof(GLuint)));
   if (counting)
@@ -415,6 +430,7 @@ void vtkPhongVisibleClusters::ReleaseGraphicsResources(vtkWindow* window)
 void vtkPhongVisibleClusters::Reset()
 {
   this->Clusters.clear();
+  this->Groups.clear();
   this->Queries.clear();
   this->Counting = false;
   this->NextRetest = 0;

@@ -67,10 +67,9 @@ public:
 
   /**
    * The depth pass's triangles: the seen clusters nearest first, then this frame's share of
-   * the hidden ones, with the program and vertex array already bound. `vertices`: the
-   * vertex buffer's size.
+   * the hidden ones, with the program and vertex array already bound.
    */
-  void Draw(vtkRenderer* ren, vtkActor* act, vtkIdType vertices);
+  void Draw(vtkRenderer* ren, vtkActor* act);
 
   ///@{
   /// The clusters' triangles, and those the last Draw drew.
@@ -93,10 +92,19 @@ public:
   ///@}
 
 private:
+  // A connected component, or a run of small ones: its clusters are drawn together.
+  struct Group
+  {
+    double Bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+      VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX }; // empty until its points are added
+  };
   struct Cluster
   {
+    size_t Group = 0;
     vtkIdType FirstIndex = 0;
     vtkIdType IndexCount = 0;
+    unsigned int FirstVertex = 0; // the range of vertices its triangles use
+    unsigned int LastVertex = 0;
     double Bounds[6] = { 0, 0, 0, 0, 0, 0 }; // of its finite points
     bool Seen = true;
     bool Counted = false; // drawn with a query not read yet
@@ -112,10 +120,11 @@ private:
     const std::vector<unsigned int>& indices, vtkPolyData* input);
   void ComputeBounds(const std::vector<unsigned int>& sorted, vtkPolyData* input);
   std::vector<size_t> DrawOrder(vtkRenderer* ren, vtkActor* act);
-  void DrawCluster(size_t k, vtkIdType vertices, bool counting);
+  void DrawCluster(size_t k, bool counting);
   void Reset();
 
   std::vector<Cluster> Clusters;
+  std::vector<Group> Groups;
   vtkNew<vtkOpenGLIndexBufferObject> SortedTriangles;
   std::vector<unsigned int> Queries; // one per cluster
   bool Counting = false;             // queries were issued and not read yet
