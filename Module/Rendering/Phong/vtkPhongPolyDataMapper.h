@@ -208,7 +208,7 @@ public:
    * triangles are cut into up to 256 spatially compact clusters (never mixing large
    * connected components, such as nested contours); the depth pass draws the clusters seen,
    * nearest first, each counted by an occlusion query (read a frame later), and leaves out
-   * those none of whose fragments passed; every 16 frames it draws each hidden cluster again
+   * those none of whose fragments passed; every 32 frames it draws each hidden cluster again
    * to see whether it came into view. The lit draw still draws every triangle, so a cluster
    * that comes into view costs frames of overdraw, never a wrong pixel. It applies to inputs
    * of polygons only (no vertices, lines or strips), drawn as surfaces, outside render

@@ -87,7 +87,7 @@ public:
    */
   static constexpr int MaximumClusters = 256;
   static constexpr int MinimumClusterTriangles = 256;
-  static constexpr int RetestInterval = 16;
+  static constexpr int RetestInterval = 32;
   static constexpr int RecountInterval = 4;
   ///@}
 
