@@ -5,7 +5,7 @@
 // cells either way. Automatic probes the pre-pass and keeps it where the lighting it saves
 // outweighs the depth pass (nested shells under 8 lights), not where nothing is hidden (a sphere).
 // Occlusion culling leaves the hidden shells out of the depth pass, and a view that turns at
-// once to what it left out is still exact.
+// once to what it left out is still exact, also with points at NaN.
 
 #include "vtkPhongReferenceTesting.h"
 
@@ -25,6 +25,7 @@
 
 #include "vtkPhongDepthPrePass.h"
 
+#include <cmath>
 #include <set>
 #include <string>
 #include <vector>
@@ -324,6 +325,24 @@ void CheckOcclusionCulling(PrePassScene& scene, vtkPhongTest::Checks& checks)
       " pixels differ)");
   camera->Azimuth(180.0);
   scene.View.Renderer->ResetCameraClippingRange();
+
+  // Points at NaN (their triangles draw nothing; the clusters' bounds and order skip them).
+  vtkNew<vtkPolyData> broken;
+  broken->DeepCopy(spheres);
+  for (vtkIdType id = 0; id < broken->GetNumberOfPoints(); id += 97)
+  {
+    broken->GetPoints()->SetPoint(id, std::nan(""), 0.0, std::nan(""));
+  }
+  mapper->SetInputData(broken);
+  const auto brokenOff = render(Mapper::DepthPrePassOff);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    render(Mapper::DepthPrePassOn);
+  }
+  const auto brokenOn = render(Mapper::DepthPrePassOn);
+  checks.Expect(mapper->GetDepthPassTriangles() < 0.6 * triangles &&
+      vtkPhongTest::CountDifferentPixels(brokenOff, brokenOn, 0) == 0,
+    "points at NaN: culled, and identical to no pre-pass");
   scene.View.Renderer->RemoveActor(line);
   scene.ShellActor->VisibilityOn();
 }
