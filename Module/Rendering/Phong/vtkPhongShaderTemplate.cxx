@@ -286,6 +286,7 @@ void vtkPhongShaderTemplate::Substitute(
     vtkPhongShadowMaps::CountFactors(shaders[vtkShader::Fragment]->GetSource());
   plan.Features.Set(
     Feature::ShadowMaps, plan.ShadowFactorCount > 0 && plan.Has(Feature::SumsPerFragment));
+  DeclareInvariantPosition(shaders);
   const bool perVertex = plan.Has(Feature::SumsPerVertex);
   const std::string sums = this->Resolve(vtkPhongLightingLib, "Sums", plan);
   const std::string lights = this->Resolve(vtkPhongLightingLib, "Lights", plan);
@@ -294,6 +295,26 @@ void vtkPhongShaderTemplate::Substitute(
   if (perVertex)
   {
     this->SubstitutePerVertex(shaders, sums, lights, plan);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The depth pre-pass draws with two programs, the depth-only one and the lit one, and the lit
+// draw's GL_LEQUAL test passes only where both computed the same depth: GLSL promises that
+// for the same expression over the same inputs only when the output is invariant (without
+// it, a compiler may schedule the position differently once the lit outputs are dropped).
+void vtkPhongShaderTemplate::DeclareInvariantPosition(
+  std::map<vtkShader::Type, vtkShader*>& shaders)
+{
+  for (vtkShader::Type type : { vtkShader::Vertex, vtkShader::Geometry })
+  {
+    vtkShader* shader = shaders[type];
+    std::string source = shader ? shader->GetSource() : std::string();
+    if (vtkShaderProgram::Substitute(
+          source, "//VTK::System::Dec", "//VTK::System::Dec\ninvariant gl_Position;", false))
+    {
+      shader->SetSource(source);
+    }
   }
 }
 
