@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <unordered_map>
 #include <utility>
@@ -335,18 +336,52 @@ void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act)
   GLint active = 0;
   glGetQueryiv(GL_SAMPLES_PASSED, GL_CURRENT_QUERY, &active);
   const bool counting = active == 0 && !this->Counting;
+  // A query costs (llvmpipe marks its start and end in every tile of the window), and so does
+  // a draw: a seen cluster is counted every RecountInterval frames, a hidden one each time it
+  // is drawn, and the seen clusters not counted are drawn first, in runs.
+  auto counted = [this, counting](size_t k)
+  { return counting && (!this->Clusters[k].Seen || (k + this->Frame) % RecountInterval == 0); };
   this->SortedTriangles->Bind();
   this->TrianglesDrawn = 0.0;
+  this->DrawUncountedRuns(counted);
   for (size_t k : this->DrawOrder(ren, act))
   {
-    // A query costs (llvmpipe marks its start and end in every tile of the window): a seen
-    // cluster is counted every RecountInterval frames, a hidden one each time it is drawn.
-    const bool recount = !this->Clusters[k].Seen || (k + this->Frame) % RecountInterval == 0;
-    this->DrawCluster(k, counting && recount);
+    if (counted(k))
+    {
+      this->DrawCluster(k);
+    }
   }
   this->SortedTriangles->Release();
   this->Counting = this->Counting || counting;
   ++this->Frame;
+}
+
+//------------------------------------------------------------------------------
+// Runs of consecutive seen clusters not counted this frame, a draw each: they hide what the
+// counted ones may lie behind.
+void vtkPhongVisibleClusters::DrawUncountedRuns(const std::function<bool(size_t)>& counted)
+{
+  const size_t count = this->Clusters.size();
+  for (size_t k = 0; k < count;)
+  {
+    if (!this->Clusters[k].Seen || counted(k))
+    {
+      ++k;
+      continue;
+    }
+    const vtkIdType firstIndex = this->Clusters[k].FirstIndex;
+    vtkIdType indices = 0;
+    unsigned int firstVertex = this->Clusters[k].FirstVertex, lastVertex = 0;
+    for (; k < count && this->Clusters[k].Seen && !counted(k); ++k)
+    {
+      indices += this->Clusters[k].IndexCount;
+      firstVertex = std::min(firstVertex, this->Clusters[k].FirstVertex);
+      lastVertex = std::max(lastVertex, this->Clusters[k].LastVertex);
+    }
+    glDrawRangeElements(GL_TRIANGLES, firstVertex, lastVertex, static_cast<GLsizei>(indices),
+      GL_UNSIGNED_INT, reinterpret_cast<const void*>(firstIndex * sizeof(GLuint)));
+    this->TrianglesDrawn += indices / 3;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -394,21 +429,15 @@ std::vector<size_t> vtkPhongVisibleClusters::DrawOrder(vtkRenderer* ren, vtkActo
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongVisibleClusters::DrawCluster(size_t k, bool counting)
+void vtkPhongVisibleClusters::DrawCluster(size_t k)
 {
   Cluster& cluster = this->Clusters[k];
-  if (counting)
-  {
-    glBeginQuery(GL_SAMPLES_PASSED, this->Queries[k]);
-  }
+  glBeginQuery(GL_SAMPLES_PASSED, this->Queries[k]);
   glDrawRangeElements(GL_TRIANGLES, cluster.FirstVertex, cluster.LastVertex,
     static_cast<GLsizei>(cluster.IndexCount), GL_UNSIGNED_INT,
     reinterpret_cast<const void*>(cluster.FirstIndex * sizeof(GLuint)));
-  if (counting)
-  {
-    glEndQuery(GL_SAMPLES_PASSED);
-    cluster.Counted = true;
-  }
+  glEndQuery(GL_SAMPLES_PASSED);
+  cluster.Counted = true;
   this->TrianglesDrawn += cluster.IndexCount / 3;
 }
 

@@ -11,10 +11,10 @@
  * This class cuts a mapper's triangles into up to MaximumClusters spatially compact
  * clusters (a copy of VTK's triangle index buffer, reordered) and keeps the depth pass to
  * the clusters seen:
- * - The depth pass draws the seen clusters nearest first, each counted by a
- *   GL_SAMPLES_PASSED query every RecountInterval frames: a cluster none of whose fragments
- *   passed the depth test is hidden behind the ones drawn before it, and is left out from
- *   the next frame on.
+ * - The depth pass draws the seen clusters, each counted by a GL_SAMPLES_PASSED query every
+ *   RecountInterval frames: first those not counted this frame (in runs, a draw each), then
+ *   the counted ones nearest first. A cluster none of whose fragments passed the depth test
+ *   is hidden behind the ones drawn before it, and is left out from the next frame on.
  * - Each frame it also draws, last and counted, a share (1/RetestInterval) of the hidden
  *   clusters, so that a cluster that comes into view is back within RetestInterval frames.
  * - The counts are read a frame later, never waited for.
@@ -33,7 +33,8 @@
 #include "vtkNew.h"  // for vtkNew
 #include "vtkType.h" // for vtkMTimeType
 
-#include <cstdint> // for std::uint32_t
+#include <cstdint>    // for std::uint32_t
+#include <functional> // for std::function
 #include <vector>  // for std::vector
 
 class vtkActor;
@@ -120,7 +121,8 @@ private:
     const std::vector<unsigned int>& indices, vtkPolyData* input);
   void ComputeBounds(const std::vector<unsigned int>& sorted, vtkPolyData* input);
   std::vector<size_t> DrawOrder(vtkRenderer* ren, vtkActor* act);
-  void DrawCluster(size_t k, bool counting);
+  void DrawUncountedRuns(const std::function<bool(size_t)>& counted);
+  void DrawCluster(size_t k); // counted
   void Reset();
 
   std::vector<Cluster> Clusters;
