@@ -1,6 +1,7 @@
 #include "vtkPhongVisibleClusters.h"
 
 #include "vtkActor.h"
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLIndexBufferObject.h"
@@ -23,38 +24,21 @@ bool IsFinite(const double p[3])
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
-void EmptyBounds(double bounds[6])
+// The least view depth of the corners of a box, `row` the model-to-view matrix's z row.
+double NearestDepth(const vtkBoundingBox& box, const double row[4])
 {
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    bounds[2 * axis] = VTK_DOUBLE_MAX;
-    bounds[2 * axis + 1] = -VTK_DOUBLE_MAX;
-  }
-}
-
-// The least view depth of the corners of bounds, `row` the model-to-view matrix's z row.
-double NearestDepth(const double bounds[6], const double row[4])
-{
-  if (!(bounds[0] <= bounds[1]))
+  if (!box.IsValid())
   {
     return VTK_DOUBLE_MAX; // no finite point
   }
   double nearest = VTK_DOUBLE_MAX;
   for (int c = 0; c < 8; ++c)
   {
-    const double x = bounds[c & 1 ? 1 : 0], y = bounds[c & 2 ? 3 : 2], z = bounds[c & 4 ? 5 : 4];
-    nearest = std::min(nearest, -(row[0] * x + row[1] * y + row[2] * z + row[3]));
+    double p[3];
+    box.GetCorner(c, p);
+    nearest = std::min(nearest, -(row[0] * p[0] + row[1] * p[1] + row[2] * p[2] + row[3]));
   }
   return nearest;
-}
-
-void AddToBounds(const double p[3], double bounds[6])
-{
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    bounds[2 * axis] = std::min(bounds[2 * axis], p[axis]);
-    bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], p[axis]);
-  }
 }
 }
 
@@ -77,7 +61,7 @@ bool vtkPhongVisibleClusters::Update(vtkWindow* window, vtkOpenGLIndexBufferObje
   this->BuiltAt = builtAt;
   this->IndexCount = triangles->IndexCount;
   this->Clusters.clear();
-  this->Groups.clear();
+  this->GroupBoxes.clear();
   this->Counting = false;
   this->Triangles = this->TrianglesDrawn = 0.0;
   std::vector<unsigned int> indices;
@@ -138,7 +122,7 @@ void vtkPhongVisibleClusters::Build(const std::vector<unsigned int>& indices, vt
       ++last;
     }
     this->Split(order, centroids, first, last, target);
-    this->Groups.emplace_back();
+    this->GroupBoxes.emplace_back();
     first = last;
   }
   std::vector<unsigned int> sorted(indices.size());
@@ -167,30 +151,27 @@ void vtkPhongVisibleClusters::Split(std::vector<std::uint32_t>& order,
   if (last - first <= target)
   {
     Cluster cluster;
-    cluster.Group = this->Groups.size();
+    cluster.Group = this->GroupBoxes.size();
     cluster.FirstIndex = static_cast<vtkIdType>(3 * first);
     cluster.IndexCount = static_cast<vtkIdType>(3 * (last - first));
     this->Clusters.push_back(cluster);
     return;
   }
-  double bounds[6];
-  EmptyBounds(bounds);
+  vtkBoundingBox box;
   for (size_t t = first; t < last; ++t)
   {
     const double* centroid = &centroids[3 * order[t]];
     if (IsFinite(centroid))
     {
-      AddToBounds(centroid, bounds);
+      box.AddPoint(centroid[0], centroid[1], centroid[2]);
     }
   }
-  int longest = 0;
-  for (int axis = 1; axis < 3; ++axis)
+  double lengths[3] = { 0.0, 0.0, 0.0 };
+  if (box.IsValid())
   {
-    if (bounds[2 * axis + 1] - bounds[2 * axis] > bounds[2 * longest + 1] - bounds[2 * longest])
-    {
-      longest = axis;
-    }
+    box.GetLengths(lengths);
   }
+  const int longest = static_cast<int>(std::max_element(lengths, lengths + 3) - lengths);
   const size_t middle = first + (last - first) / 2;
   // NaN centroids compare as the lowest, so the order stays strict and weak.
   auto key = [&centroids, longest](std::uint32_t t)
@@ -262,7 +243,7 @@ std::vector<double> vtkPhongVisibleClusters::Centroids(
 }
 
 //------------------------------------------------------------------------------
-// Each cluster's and group's bounds over their finite points, for the draw order, and the
+// Each cluster's and group's box around their finite points, for the draw order, and the
 // range of vertices each cluster uses, for the driver.
 void vtkPhongVisibleClusters::ComputeBounds(
   const std::vector<unsigned int>& sorted, vtkPolyData* input)
@@ -270,7 +251,7 @@ void vtkPhongVisibleClusters::ComputeBounds(
   vtkPoints* points = input->GetPoints();
   for (Cluster& cluster : this->Clusters)
   {
-    EmptyBounds(cluster.Bounds);
+    cluster.Box.Reset();
     const auto first = sorted.begin() + cluster.FirstIndex;
     const auto range = std::minmax_element(first, first + cluster.IndexCount);
     cluster.FirstVertex = *range.first;
@@ -281,8 +262,8 @@ void vtkPhongVisibleClusters::ComputeBounds(
       points->GetPoint(sorted[i], p);
       if (IsFinite(p))
       {
-        AddToBounds(p, cluster.Bounds);
-        AddToBounds(p, this->Groups[cluster.Group].Bounds);
+        cluster.Box.AddPoint(p);
+        this->GroupBoxes[cluster.Group].AddPoint(p);
       }
     }
   }
@@ -394,10 +375,10 @@ std::vector<size_t> vtkPhongVisibleClusters::DrawOrder(vtkRenderer* ren, vtkActo
   vtkMatrix4x4::Multiply4x4(
     ren->GetActiveCamera()->GetModelViewTransformMatrix(), act->GetMatrix(), modelToView);
   const double* row = modelToView->GetData() + 8; // the view z row: depth is -z
-  std::vector<double> groupDepths(this->Groups.size());
-  for (size_t g = 0; g < this->Groups.size(); ++g)
+  std::vector<double> groupDepths(this->GroupBoxes.size());
+  for (size_t g = 0; g < this->GroupBoxes.size(); ++g)
   {
-    groupDepths[g] = NearestDepth(this->Groups[g].Bounds, row);
+    groupDepths[g] = NearestDepth(this->GroupBoxes[g], row);
   }
   std::vector<std::pair<std::pair<double, double>, size_t>> seen;
   std::vector<size_t> hidden;
@@ -406,7 +387,7 @@ std::vector<size_t> vtkPhongVisibleClusters::DrawOrder(vtkRenderer* ren, vtkActo
     const Cluster& cluster = this->Clusters[k];
     if (cluster.Seen)
     {
-      seen.push_back({ { groupDepths[cluster.Group], NearestDepth(cluster.Bounds, row) }, k });
+      seen.push_back({ { groupDepths[cluster.Group], NearestDepth(cluster.Box, row) }, k });
     }
     else
     {
@@ -459,7 +440,7 @@ void vtkPhongVisibleClusters::ReleaseGraphicsResources(vtkWindow* window)
 void vtkPhongVisibleClusters::Reset()
 {
   this->Clusters.clear();
-  this->Groups.clear();
+  this->GroupBoxes.clear();
   this->Queries.clear();
   this->Counting = false;
   this->NextRetest = 0;

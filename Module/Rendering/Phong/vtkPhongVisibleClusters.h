@@ -30,8 +30,9 @@
 #ifndef vtkPhongVisibleClusters_h
 #define vtkPhongVisibleClusters_h
 
-#include "vtkNew.h"  // for vtkNew
-#include "vtkType.h" // for vtkMTimeType
+#include "vtkBoundingBox.h" // for vtkBoundingBox
+#include "vtkNew.h"         // for vtkNew
+#include "vtkType.h"        // for vtkMTimeType
 
 #include <cstdint>    // for std::uint32_t
 #include <functional> // for std::function
@@ -93,20 +94,14 @@ public:
   ///@}
 
 private:
-  // A connected component, or a run of small ones: its clusters are drawn together.
-  struct Group
-  {
-    double Bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
-      VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX }; // empty until its points are added
-  };
   struct Cluster
   {
-    size_t Group = 0;
+    size_t Group = 0; // its connected component, or run of small ones (GroupBoxes)
     vtkIdType FirstIndex = 0;
     vtkIdType IndexCount = 0;
     unsigned int FirstVertex = 0; // the range of vertices its triangles use
     unsigned int LastVertex = 0;
-    double Bounds[6] = { 0, 0, 0, 0, 0, 0 }; // of its finite points
+    vtkBoundingBox Box; // around its finite points
     bool Seen = true;
     bool Counted = false; // drawn with a query not read yet
   };
@@ -126,7 +121,8 @@ private:
   void Reset();
 
   std::vector<Cluster> Clusters;
-  std::vector<Group> Groups;
+  // Each group's box: a group's clusters are drawn together, nearest group first.
+  std::vector<vtkBoundingBox> GroupBoxes;
   vtkNew<vtkOpenGLIndexBufferObject> SortedTriangles;
   std::vector<unsigned int> Queries; // one per cluster
   bool Counting = false;             // queries were issued and not read yet
