@@ -339,9 +339,10 @@ void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
     input ? static_cast<double>(input->GetNumberOfPolys() + input->GetNumberOfStrips()) : 0.0;
   vtkPhongVisibleClusters& clusters = this->Internal->Clusters;
   const bool culling = this->CanCullDepthPass(ren, act);
-  const double depthTriangles = culling && clusters.GetNumberOfTriangles() > 0
-    ? triangles - clusters.GetNumberOfTriangles() + clusters.CollectVisibility()
-    : triangles;
+  // Culled, the depth pass draws the seen clusters' triangles and nothing else (VTK's
+  // triangulated polygons, where `triangles` counts cells).
+  const double depthTriangles =
+    culling && clusters.GetNumberOfTriangles() > 0 ? clusters.CollectVisibility() : triangles;
   this->DepthPassTriangles = 0.0;
   this->UsedDepthPrePass = this->Internal->PrePass.Draw(this->DepthPrePass, ren, act, this,
     triangles, depthTriangles, this->GetNumberOfCulledLights(),
@@ -357,6 +358,7 @@ void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
           clusters.Update(ren->GetRenderWindow(), this->Primitives[PrimitiveTris].IBO, input,
             this->VBOBuildTime.GetMTime());
         this->DrawDepthPass(ren, act, culled);
+        this->DepthPassTriangles = culled ? clusters.GetNumberOfTrianglesDrawn() : triangles;
         this->PrimitiveIDOffset = primitiveIdOffset;
       }
       else
@@ -375,17 +377,12 @@ void vtkPhongPolyDataMapper::DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool
   if (!culled)
   {
     this->Superclass::RenderPieceDraw(ren, act);
-    this->DepthPassTriangles = this->CurrentInput
-      ? static_cast<double>(
-          this->CurrentInput->GetNumberOfPolys() + this->CurrentInput->GetNumberOfStrips())
-      : 0.0;
     return;
   }
   this->DrawingVertices = false;
   this->DrawingSelection = false;
   this->UpdateShaders(this->Primitives[PrimitiveTris], ren, act);
   this->Internal->Clusters.Draw(ren, act);
-  this->DepthPassTriangles = this->Internal->Clusters.GetNumberOfTrianglesDrawn();
 }
 
 //------------------------------------------------------------------------------
