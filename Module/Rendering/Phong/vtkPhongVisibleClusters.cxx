@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <numeric>
 #include <unordered_map>
 #include <utility>
@@ -320,14 +319,17 @@ void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act)
   // A query costs (llvmpipe marks its start and end in every tile of the window), and so does
   // a draw: a seen cluster is counted every RecountInterval frames, a hidden one each time it
   // is drawn, and the seen clusters not counted are drawn first, in runs.
-  auto counted = [this, counting](size_t k)
-  { return counting && (!this->Clusters[k].Seen || (k + this->Frame) % RecountInterval == 0); };
+  std::vector<bool> counted(this->Clusters.size(), false);
+  for (size_t k = 0; counting && k < counted.size(); ++k)
+  {
+    counted[k] = !this->Clusters[k].Seen || (k + this->Frame) % RecountInterval == 0;
+  }
   this->SortedTriangles->Bind();
   this->TrianglesDrawn = 0.0;
   this->DrawUncountedRuns(counted);
   for (size_t k : this->DrawOrder(ren, act))
   {
-    if (counted(k))
+    if (counted[k])
     {
       this->DrawCluster(k);
     }
@@ -340,12 +342,12 @@ void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act)
 //------------------------------------------------------------------------------
 // Runs of consecutive seen clusters not counted this frame, a draw each: they hide what the
 // counted ones may lie behind.
-void vtkPhongVisibleClusters::DrawUncountedRuns(const std::function<bool(size_t)>& counted)
+void vtkPhongVisibleClusters::DrawUncountedRuns(const std::vector<bool>& counted)
 {
   const size_t count = this->Clusters.size();
   for (size_t k = 0; k < count;)
   {
-    if (!this->Clusters[k].Seen || counted(k))
+    if (!this->Clusters[k].Seen || counted[k])
     {
       ++k;
       continue;
@@ -353,7 +355,7 @@ void vtkPhongVisibleClusters::DrawUncountedRuns(const std::function<bool(size_t)
     const vtkIdType firstIndex = this->Clusters[k].FirstIndex;
     vtkIdType indices = 0;
     unsigned int firstVertex = this->Clusters[k].FirstVertex, lastVertex = 0;
-    for (; k < count && this->Clusters[k].Seen && !counted(k); ++k)
+    for (; k < count && this->Clusters[k].Seen && !counted[k]; ++k)
     {
       indices += this->Clusters[k].IndexCount;
       firstVertex = std::min(firstVertex, this->Clusters[k].FirstVertex);

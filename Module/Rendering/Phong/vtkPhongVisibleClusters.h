@@ -34,8 +34,7 @@
 #include "vtkNew.h"         // for vtkNew
 #include "vtkType.h"        // for vtkMTimeType
 
-#include <cstdint>    // for std::uint32_t
-#include <functional> // for std::function
+#include <cstdint> // for std::uint32_t
 #include <vector>  // for std::vector
 
 class vtkActor;
@@ -116,7 +115,7 @@ private:
     const std::vector<unsigned int>& indices, vtkPolyData* input);
   void ComputeBounds(const std::vector<unsigned int>& sorted, vtkPolyData* input);
   std::vector<size_t> DrawOrder(vtkRenderer* ren, vtkActor* act);
-  void DrawUncountedRuns(const std::function<bool(size_t)>& counted);
+  void DrawUncountedRuns(const std::vector<bool>& counted);
   void DrawCluster(size_t k); // counted
   void Reset();
 
