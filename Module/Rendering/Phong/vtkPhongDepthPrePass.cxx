@@ -88,11 +88,11 @@ void vtkPhongDepthPrePass::DrawWithPrePass(
     // Back faces may be left out of the depth pass: the lit draw writes depth with GL_LEQUAL,
     // so a back face nearer than every front face still wins there, and any subset of the
     // surfaces gives the same picture. The depth pass then sets up half the triangles of a
-    // closed surface. The actor's own culling, when it has some, applies to both draws.
-    vtkProperty* property = act->GetProperty();
-    const bool actorCulls = property->GetBackfaceCulling() || property->GetFrontfaceCulling();
+    // closed surface. Culling already on (the actor's own, or the mapper's of a closed
+    // surface's hidden faces) applies to both draws.
+    const bool alreadyCulling = state->GetEnumState(GL_CULL_FACE);
     vtkOpenGLState::ScopedglEnableDisable culling(state, GL_CULL_FACE);
-    if (!actorCulls)
+    if (!alreadyCulling)
     {
       state->vtkglCullFace(GL_BACK);
       state->vtkglEnable(GL_CULL_FACE);

@@ -3,13 +3,20 @@
 #include "vtkActor.h"
 #include "vtkCellData.h"
 #include "vtkMath.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
+#include "vtkOpenGLRenderPass.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderProperty.h"
+#include "vtkOpenGLState.h"
 #include "vtkRenderWindow.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPhongClampedSetter.h"
+#include "vtkPhongClosedSurface.h"
+#include "vtkPhongCompatibility.h"
 #include "vtkPhongDepthPrePass.h"
 #include "vtkPhongMapperCore.h"
 #include "vtkPhongValidBlocks.h"
@@ -19,6 +26,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
+#include "vtk_glew.h"
 
 vtkStandardNewMacro(vtkPhongPolyDataMapper);
 
@@ -37,6 +45,8 @@ struct vtkPhongPolyDataMapper::Internals
   vtkPhongDepthPrePass PrePass;
   // The triangles the depth pass draws: those seen in the last frame.
   vtkPhongVisibleClusters Clusters;
+  // Whether the triangles are closed surfaces, whose back faces can be culled.
+  vtkPhongClosedSurface ClosedSurface;
 };
 
 //------------------------------------------------------------------------------
@@ -330,9 +340,88 @@ void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
+// With the back faces culled when none can be seen (vtkPhongClosedSurface); both the depth
+// pass and the lit draw then leave them out.
+void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
+{
+  const unsigned int hiddenFaces = this->HiddenFaces(ren, act);
+  this->UsedClosedSurfaceCulling = hiddenFaces != 0;
+  if (!hiddenFaces)
+  {
+    this->DrawSurfaces(ren, act);
+    return;
+  }
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  GLint cullFaceMode = GL_BACK;
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode);
+  {
+    vtkOpenGLState::ScopedglEnableDisable culling(state, GL_CULL_FACE);
+    state->vtkglCullFace(hiddenFaces);
+    state->vtkglEnable(GL_CULL_FACE);
+    this->DrawSurfaces(ren, act);
+  }
+  state->vtkglCullFace(static_cast<GLenum>(cullFaceMode));
+}
+
+//------------------------------------------------------------------------------
+// The faces to cull, or 0: the conditions under which a closed surface's back faces cannot
+// show (a face that a shader replacement moves or discards, a clipping plane's cut, a
+// texture's transparent texel, an edge drawn over a silhouette could show one) and nothing
+// else drawn is made of triangles, then the surfaces and the view (vtkPhongClosedSurface).
+unsigned int vtkPhongPolyDataMapper::HiddenFaces(vtkRenderer* ren, vtkActor* act)
+{
+  vtkProperty* property = act->GetProperty();
+  vtkInformation* keys = act->GetPropertyKeys();
+  const bool plainOpaqueSurface = property->GetRepresentation() == VTK_SURFACE &&
+    property->GetOpacity() >= 1.0 && !property->GetBackfaceCulling() &&
+    !property->GetFrontfaceCulling() && !property->GetEdgeVisibility() &&
+    !property->GetVertexVisibility() && property->GetNumberOfTextures() == 0 &&
+    !act->GetTexture() && !act->GetForceOpaque() && !act->IsRenderingTranslucentPolygonalGeometry();
+  // Wide lines, tubes and spheres are triangles a geometry shader makes, of any winding.
+  const bool linesOfTriangles = this->Primitives[PrimitiveLines].IBO->IndexCount > 0 &&
+    (property->GetLineWidth() > 1.0 || property->GetRenderLinesAsTubes());
+  const bool pointsOfTriangles = this->Primitives[PrimitivePoints].IBO->IndexCount > 0 &&
+    (property->GetPointSize() > 1.0 || property->GetRenderPointsAsSpheres());
+  const bool onlyClosedTriangles = this->Primitives[PrimitiveTris].IBO->IndexCount > 0 &&
+    this->Primitives[PrimitiveTriStrips].IBO->IndexCount == 0 && !linesOfTriangles &&
+    !pointsOfTriangles;
+  if (!this->ClosedSurfaceCulling || !plainOpaqueSurface || !onlyClosedTriangles ||
+    this->HasShaderCodeOfUser(act) ||
+    this->GetNumberOfClippingPlanes() > 0 || ren->GetSelector() ||
+    (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())) || !this->CurrentInput)
+  {
+    return 0;
+  }
+  vtkPhongClosedSurface& surface = this->Internal->ClosedSurface;
+  surface.Update(
+    this->Primitives[PrimitiveTris].IBO, this->CurrentInput, this->VBOBuildTime.GetMTime());
+  return surface.HiddenFaces(ren, act, this->CurrentInput->GetBounds());
+}
+
+//------------------------------------------------------------------------------
+// Shader code of the user's: replacements or whole shaders on the actor's shader property, or
+// (before VTK 9.3) on the mapper itself.
+bool vtkPhongPolyDataMapper::HasShaderCodeOfUser(vtkActor* act)
+{
+  vtkShaderProperty* shaders = act->GetShaderProperty();
+  if (shaders &&
+    (shaders->GetNumberOfShaderReplacements() > 0 || shaders->HasVertexShaderCode() ||
+      shaders->HasFragmentShaderCode() || shaders->HasGeometryShaderCode()))
+  {
+    return true;
+  }
+#if !VTKPHONG_VTK_9_3
+  return this->LegacyShaderProperty &&
+    this->LegacyShaderProperty->GetNumberOfShaderReplacements() > 0;
+#else
+  return false;
+#endif
+}
+
+//------------------------------------------------------------------------------
 // Plainly or with the depth pre-pass (vtkPhongDepthPrePass decides and draws), whose depth
 // pass may leave out the triangles hidden in the last frame (vtkPhongVisibleClusters).
-void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
+void vtkPhongPolyDataMapper::DrawSurfaces(vtkRenderer* ren, vtkActor* act)
 {
   vtkPolyData* input = this->CurrentInput;
   const double triangles =
@@ -441,6 +530,9 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthPrePassOcclusionCulling: "
      << (this->DepthPrePassOcclusionCulling ? "On" : "Off") << "\n";
   os << indent << "DepthPassTriangles: " << this->DepthPassTriangles << "\n";
+  os << indent << "ClosedSurfaceCulling: " << (this->ClosedSurfaceCulling ? "On" : "Off") << "\n";
+  os << indent << "UsedClosedSurfaceCulling: " << (this->UsedClosedSurfaceCulling ? "yes" : "no")
+     << "\n";
   os << indent << "MaximumNumberOfShaderPrograms: " << this->MaximumNumberOfShaderPrograms << "\n";
   os << indent << "Lighting:\n";
   this->Internal->Core->PrintSelf(os, indent.GetNextIndent());
@@ -461,6 +553,7 @@ void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
     this->SetLightCullingBound(phong->GetLightCullingBound());
     this->SetDepthPrePass(phong->GetDepthPrePass());
     this->SetDepthPrePassOcclusionCulling(phong->GetDepthPrePassOcclusionCulling());
+    this->SetClosedSurfaceCulling(phong->GetClosedSurfaceCulling());
     this->SetMaximumNumberOfShaderPrograms(phong->GetMaximumNumberOfShaderPrograms());
   }
   this->Superclass::ShallowCopy(mapper);

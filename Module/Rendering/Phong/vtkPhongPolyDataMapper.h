@@ -223,6 +223,26 @@ public:
 
   ///@{
   /**
+   * Culling of hidden back faces (default on). Seen from outside, the back faces of a closed,
+   * consistently oriented surface all lie behind its front faces, yet a plain draw sets
+   * them up, rasterizes them and tests their depth (on llvmpipe about a third of a closed
+   * mesh's frame). When the triangles form closed surfaces, each enclosing a volume of the
+   * same orientation (checked once per upload, points at one position taken as one), and
+   * the camera sees all of the bounds from beyond the near plane, the mapper culls the
+   * faces turned away: the picture is the same. Never for translucent or textured actors,
+   * other representations than surface, edges or vertices shown, clipping planes, shader
+   * replacements, triangle strips, hardware selection, render passes (a shadow map is drawn
+   * from the light) or when the actor's property culls faces itself
+   * (vtkPhongClosedSurface.h). UsedClosedSurfaceCulling: whether the last draw culled.
+   */
+  vtkSetMacro(ClosedSurfaceCulling, bool);
+  vtkGetMacro(ClosedSurfaceCulling, bool);
+  vtkBooleanMacro(ClosedSurfaceCulling, bool);
+  vtkGetMacro(UsedClosedSurfaceCulling, bool);
+  ///@}
+
+  ///@{
+  /**
    * Shader statistics since the mapper was created (or last released its graphics resources).
    * ShaderCompileCount: how many times the mapper asked the render window for a program
    * whose source it had not used before; each costs a compile and link unless another mapper
@@ -306,6 +326,8 @@ protected:
   bool UsedDepthPrePass = false;
   bool DepthPrePassOcclusionCulling = true;
   double DepthPassTriangles = 0.0;
+  bool ClosedSurfaceCulling = true;
+  bool UsedClosedSurfaceCulling = false;
   int MaximumNumberOfShaderPrograms = 32;
 
 private:
@@ -313,6 +335,9 @@ private:
   void operator=(const vtkPhongPolyDataMapper&) = delete;
 
   vtkPolyData* GetValidInput(vtkPolyData* input);
+  void DrawSurfaces(vtkRenderer* ren, vtkActor* act);
+  unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act);
+  bool HasShaderCodeOfUser(vtkActor* act);
   bool CanCullDepthPass(vtkRenderer* ren, vtkActor* act);
   void DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool culled);
 

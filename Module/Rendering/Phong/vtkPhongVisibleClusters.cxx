@@ -79,7 +79,6 @@ bool vtkPhongVisibleClusters::Update(vtkWindow* window, vtkOpenGLIndexBufferObje
 }
 
 //------------------------------------------------------------------------------
-// The indices exactly as VTK uploaded them (polygons triangulated, invalid cells collapsed).
 bool vtkPhongVisibleClusters::ReadIndices(
   vtkOpenGLIndexBufferObject* triangles, std::vector<unsigned int>& indices)
 {

@@ -80,6 +80,13 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
+  /**
+   * The indices of VTK's triangle index buffer exactly as it uploaded them (polygons
+   * triangulated, invalid cells collapsed); false when there are none. Also used by
+   * vtkPhongClosedSurface.
+   */
+  static bool ReadIndices(vtkOpenGLIndexBufferObject* triangles, std::vector<unsigned int>& indices);
+
   ///@{
   /**
    * At most MaximumClusters clusters of at least MinimumClusterTriangles triangles. A hidden
@@ -105,7 +112,6 @@ private:
     bool Counted = false; // drawn with a query not read yet
   };
 
-  bool ReadIndices(vtkOpenGLIndexBufferObject* triangles, std::vector<unsigned int>& indices);
   void Build(const std::vector<unsigned int>& indices, vtkPolyData* input);
   void Split(std::vector<std::uint32_t>& order, const std::vector<double>& centroids,
     size_t first, size_t last, size_t target);

@@ -1,0 +1,253 @@
+#include "vtkPhongClosedSurface.h"
+
+#include "vtkActor.h"
+#include "vtkBoundingBox.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLIndexBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPhongVisibleClusters.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <unordered_map>
+
+namespace
+{
+// How far beyond the near plane (in normalized depth, -1 at the plane) every corner of the
+// bounds must lie: well above the rounding of the GPU's clipping, well below any gap a
+// camera leaves in practice (5e-5 of the near distance in perspective).
+constexpr double NearPlaneMargin = 1e-4;
+
+// A closed surface whose volume is below this share of its bounds' diagonal cubed is flat
+// (a sheet modelled with both sides): its orientation says nothing.
+constexpr double FlatVolumeShare = 1e-9;
+
+// Edge keys pack two point ids below 2^31 and a direction bit.
+constexpr std::uint64_t LargestPackedId = (std::uint64_t(1) << 31) - 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongClosedSurface::Update(
+  vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input, vtkMTimeType builtAt)
+{
+  if (builtAt == this->BuiltAt && triangles->IndexCount == this->IndexCount)
+  {
+    return;
+  }
+  this->BuiltAt = builtAt;
+  this->IndexCount = triangles->IndexCount;
+  this->Orientation = 0;
+  std::vector<unsigned int> indices;
+  if (!input || !input->GetPoints() ||
+    !vtkPhongVisibleClusters::ReadIndices(triangles, indices) ||
+    !WeldTriangles(indices, WeldPoints(input)) || !IsClosedAndConsistent(indices))
+  {
+    return;
+  }
+  this->Orientation = Orient(indices, input);
+}
+
+//------------------------------------------------------------------------------
+// Each point's representative: the lowest id at the same position (split normals and
+// per-face attributes duplicate points, and the surface is closed across the copies).
+std::vector<vtkIdType> vtkPhongClosedSurface::WeldPoints(vtkPolyData* input)
+{
+  vtkPoints* points = input->GetPoints();
+  const vtkIdType count = points->GetNumberOfPoints();
+  std::vector<std::array<double, 3>> positions(count);
+  std::vector<vtkIdType> order;
+  order.reserve(count);
+  for (vtkIdType p = 0; p < count; ++p)
+  {
+    points->GetPoint(p, positions[p].data());
+    if (vtkMath::IsFinite(positions[p][0]) && vtkMath::IsFinite(positions[p][1]) &&
+      vtkMath::IsFinite(positions[p][2]))
+    {
+      order.push_back(p);
+    }
+  }
+  std::sort(order.begin(), order.end(), [&positions](vtkIdType a, vtkIdType b)
+    { return positions[a] != positions[b] ? positions[a] < positions[b] : a < b; });
+  std::vector<vtkIdType> welded(count, -1);
+  for (size_t k = 0; k < order.size(); ++k)
+  {
+    const bool same = k > 0 && positions[order[k]] == positions[order[k - 1]];
+    welded[order[k]] = same ? welded[order[k - 1]] : order[k];
+  }
+  return welded;
+}
+
+//------------------------------------------------------------------------------
+// The triangles with welded corners, those with two corners at one point (no area, no
+// pixel) left out. False when a corner is not finite or an index names no point.
+bool vtkPhongClosedSurface::WeldTriangles(
+  std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded)
+{
+  size_t kept = 0;
+  for (size_t i = 0; i + 2 < indices.size(); i += 3)
+  {
+    vtkIdType corners[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const unsigned int index = indices[i + k];
+      corners[k] = index < welded.size() ? welded[index] : -1;
+      if (corners[k] < 0 || static_cast<std::uint64_t>(corners[k]) > LargestPackedId)
+      {
+        return false;
+      }
+    }
+    if (corners[0] != corners[1] && corners[1] != corners[2] && corners[2] != corners[0])
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        indices[kept++] = static_cast<unsigned int>(corners[k]);
+      }
+    }
+  }
+  indices.resize(kept);
+  return kept > 0;
+}
+
+//------------------------------------------------------------------------------
+// Every edge is used exactly twice, once in each direction: each undirected edge's key,
+// with the direction in the lowest bit, appears as the pair (key, key + 1) and only once.
+bool vtkPhongClosedSurface::IsClosedAndConsistent(const std::vector<unsigned int>& triangles)
+{
+  std::vector<std::uint64_t> edges;
+  edges.reserve(triangles.size());
+  for (size_t i = 0; i < triangles.size(); i += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint64_t from = triangles[i + k];
+      const std::uint64_t to = triangles[i + (k + 1) % 3];
+      const std::uint64_t low = std::min(from, to), high = std::max(from, to);
+      edges.push_back((low << 33) | (high << 1) | (from < to ? 0 : 1));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for (size_t e = 0; e < edges.size(); e += 2)
+  {
+    const bool paired = e + 1 < edges.size() && (edges[e] & 1) == 0 && edges[e + 1] == edges[e] + 1;
+    const bool once = e + 2 >= edges.size() || (edges[e + 2] >> 1) != (edges[e] >> 1);
+    if (!paired || !once)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The sign of the volume each connected surface encloses (the divergence theorem: the sum
+// of the tetrahedra its triangles span with a common origin), +1 or -1 when all agree.
+int vtkPhongClosedSurface::Orient(const std::vector<unsigned int>& triangles, vtkPolyData* input)
+{
+  std::vector<vtkIdType> parent(input->GetNumberOfPoints());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&parent](vtkIdType p)
+  {
+    while (parent[p] != p)
+    {
+      parent[p] = parent[parent[p]];
+      p = parent[p];
+    }
+    return p;
+  };
+  for (size_t i = 0; i < triangles.size(); i += 3)
+  {
+    parent[root(triangles[i + 1])] = root(triangles[i]);
+    parent[root(triangles[i + 2])] = root(triangles[i]);
+  }
+  vtkPoints* points = input->GetPoints();
+  double origin[3];
+  vtkBoundingBox(input->GetBounds()).GetCenter(origin);
+  struct Surface
+  {
+    double Volume = 0.0;
+    vtkBoundingBox Box;
+  };
+  std::unordered_map<vtkIdType, Surface> surfaces;
+  for (size_t i = 0; i < triangles.size(); i += 3)
+  {
+    Surface& surface = surfaces[root(triangles[i])];
+    double corners[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      points->GetPoint(triangles[i + k], corners[k]);
+      surface.Box.AddPoint(corners[k]);
+      vtkMath::Subtract(corners[k], origin, corners[k]);
+    }
+    double cross[3];
+    vtkMath::Cross(corners[1], corners[2], cross);
+    surface.Volume += vtkMath::Dot(corners[0], cross) / 6.0;
+  }
+  int orientation = 0;
+  for (const auto& entry : surfaces)
+  {
+    const double diagonal = entry.second.Box.GetDiagonalLength();
+    const double volume = entry.second.Volume;
+    const int sign = volume > 0.0 ? 1 : -1;
+    if (std::abs(volume) <= FlatVolumeShare * diagonal * diagonal * diagonal ||
+      (orientation != 0 && sign != orientation))
+    {
+      return 0;
+    }
+    orientation = sign;
+  }
+  return orientation;
+}
+
+//------------------------------------------------------------------------------
+// In clip coordinates of the projection VTK draws with (the camera's, this eye's in stereo,
+// and the actor's matrix): every corner in front of the near plane means the camera is
+// outside the bounds and the near plane opens nothing. The window's winding of an outward
+// face is counter-clockwise (OpenGL's front) when the projection's determinant is negative,
+// as a standard perspective or parallel projection's is.
+unsigned int vtkPhongClosedSurface::HiddenFaces(
+  vtkRenderer* ren, vtkActor* act, const double bounds[6]) const
+{
+  auto* camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+  if (this->Orientation == 0 || !camera || !vtkMath::AreBoundsInitialized(bounds))
+  {
+    return 0;
+  }
+  vtkMatrix4x4* worldToView;
+  vtkMatrix3x3* normalMatrix;
+  vtkMatrix4x4* viewToClip;
+  vtkMatrix4x4* worldToClipTransposed; // VTK keeps it transposed, as OpenGL reads it
+  camera->GetKeyMatrices(ren, worldToView, normalMatrix, viewToClip, worldToClipTransposed);
+  vtkNew<vtkMatrix4x4> worldToClip;
+  vtkMatrix4x4::Transpose(worldToClipTransposed, worldToClip);
+  vtkNew<vtkMatrix4x4> modelToClip;
+  vtkMatrix4x4::Multiply4x4(worldToClip, act->GetMatrix(), modelToClip);
+  const vtkBoundingBox box(bounds);
+  for (int c = 0; c < 8; ++c)
+  {
+    double corner[4] = { 0.0, 0.0, 0.0, 1.0 };
+    box.GetCorner(c, corner);
+    double clip[4];
+    modelToClip->MultiplyPoint(corner, clip);
+    if (!(clip[3] > 0.0 && clip[2] > (NearPlaneMargin - 1.0) * clip[3]))
+    {
+      return 0;
+    }
+  }
+  const double determinant = modelToClip->Determinant();
+  if (!(determinant != 0.0))
+  {
+    return 0;
+  }
+  return (this->Orientation > 0) == (determinant < 0.0) ? GL_BACK : GL_FRONT;
+}

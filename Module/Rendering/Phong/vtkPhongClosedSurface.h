@@ -1,0 +1,81 @@
+/**
+ * @class   vtkPhongClosedSurface
+ * @brief   whether a mapper's back faces can be seen at all, and which faces to cull (private)
+ *
+ * Seen from outside, the first surface a viewing ray meets on a closed, consistently
+ * oriented surface is one it enters the solid through: a face turned towards the viewer.
+ * The faces turned away are all hidden behind it, but stock VTK still sets them up,
+ * rasterizes them and tests their depth, and shades those drawn before the face in front.
+ * On llvmpipe that is about a third of a closed mesh's frame.
+ *
+ * This class decides, once per upload of VTK's triangle index buffer, whether the triangles
+ * are closed surfaces:
+ * - Points at the same position are one point (split normals duplicate them), and a
+ *   triangle with two corners at one point, which covers no pixel, is left out.
+ * - Closed and consistently oriented: every edge is used exactly twice, once in each
+ *   direction. Any point that is not finite rules culling out.
+ * - Each connected surface encloses a volume of one sign, the same for all of them: all
+ *   outward (the usual orientation) or all inward. Mixed signs (a hollow solid's inner
+ *   wall) and flat closed surfaces (volume about 0) rule culling out.
+ *
+ * Per view, HiddenFaces() answers whether the camera sees all of it from outside: every
+ * corner of the drawn bounds lies beyond the near plane in the projection VTK draws with
+ * (so the camera is outside, and no near-plane cut opens the solid). The face to cull
+ * follows from the orientation and from the sign of the projection's determinant (a
+ * mirroring actor or camera matrix turns the window's winding over).
+ *
+ * One assumption is not checked: a closed surface that passes through itself so that a
+ * region lies inside it a negative number of times (a surface folded inside out) shows back
+ * faces. Scanned, contoured and CAD meshes do not do that; the mapper's
+ * ClosedSurfaceCulling switch turns this off.
+ */
+
+#ifndef vtkPhongClosedSurface_h
+#define vtkPhongClosedSurface_h
+
+#include "vtkType.h" // for vtkMTimeType
+
+#include <cstddef> // for size_t
+#include <vector>  // for std::vector
+
+class vtkActor;
+class vtkOpenGLIndexBufferObject;
+class vtkPolyData;
+class vtkRenderer;
+
+class vtkPhongClosedSurface
+{
+public:
+  /**
+   * Analyse the triangles VTK's index buffer `triangles` draws (indices into the points of
+   * `input`) when the buffer was rebuilt since (`builtAt`, VTK's VBOBuildTime). Call with
+   * the window's context current.
+   */
+  void Update(vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input, vtkMTimeType builtAt);
+
+  /**
+   * +1: closed surfaces, each enclosing its volume with outward faces; -1: all inward;
+   * 0: not closed surfaces (or not analysed), nothing may be culled.
+   */
+  int GetOrientation() const { return this->Orientation; }
+
+  /**
+   * The faces to cull (GL_BACK or GL_FRONT) when the renderer's camera sees the surfaces,
+   * whose model bounds are `bounds`, from outside with the actor's matrix; 0 otherwise.
+   */
+  unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act, const double bounds[6]) const;
+
+private:
+  static std::vector<vtkIdType> WeldPoints(vtkPolyData* input);
+  static bool WeldTriangles(
+    std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded);
+  static bool IsClosedAndConsistent(const std::vector<unsigned int>& triangles);
+  static int Orient(const std::vector<unsigned int>& triangles, vtkPolyData* input);
+
+  int Orientation = 0;
+  vtkMTimeType BuiltAt = 0;
+  size_t IndexCount = 0;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkPhongClosedSurface.h
