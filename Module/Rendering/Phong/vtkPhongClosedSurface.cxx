@@ -33,6 +33,9 @@ constexpr double NearPlaneMargin = 1e-4;
 // (a sheet modelled with both sides): its orientation says nothing.
 constexpr double FlatVolumeShare = 1e-9;
 
+// How many ray-triangle tests the check of cavities may take (about 0.1 s).
+constexpr size_t MaximumEnclosureTests = size_t(16) << 20;
+
 // Edge keys pack two point ids below 2^31 and a direction bit.
 constexpr std::uint64_t LargestPackedId = (std::uint64_t(1) << 31) - 1;
 }
@@ -150,9 +153,11 @@ bool vtkPhongClosedSurface::IsClosedAndConsistent(const std::vector<unsigned int
 }
 
 //------------------------------------------------------------------------------
-// The sign of the volume each connected surface encloses (the divergence theorem: the sum
-// of the tetrahedra its triangles span with a common origin), +1 or -1 when all agree.
-int vtkPhongClosedSurface::Orient(const std::vector<unsigned int>& triangles, vtkPolyData* input)
+// The connected surfaces (triangles sharing a point), each triangle's surface in `owner`, with
+// the volume each encloses (the divergence theorem: the sum of the tetrahedra its triangles
+// span with a common origin), its bounds and one of its points.
+std::vector<vtkPhongClosedSurface::Surface> vtkPhongClosedSurface::FindSurfaces(
+  const std::vector<unsigned int>& triangles, vtkPolyData* input, std::vector<size_t>& owner)
 {
   std::vector<vtkIdType> parent(input->GetNumberOfPoints());
   std::iota(parent.begin(), parent.end(), 0);
@@ -173,15 +178,19 @@ int vtkPhongClosedSurface::Orient(const std::vector<unsigned int>& triangles, vt
   vtkPoints* points = input->GetPoints();
   double origin[3];
   vtkBoundingBox(input->GetBounds()).GetCenter(origin);
-  struct Surface
-  {
-    double Volume = 0.0;
-    vtkBoundingBox Box;
-  };
-  std::unordered_map<vtkIdType, Surface> surfaces;
+  std::unordered_map<vtkIdType, size_t> numbers;
+  std::vector<Surface> surfaces;
+  owner.resize(triangles.size() / 3);
   for (size_t i = 0; i < triangles.size(); i += 3)
   {
-    Surface& surface = surfaces[root(triangles[i])];
+    const auto inserted = numbers.emplace(root(triangles[i]), surfaces.size());
+    if (inserted.second)
+    {
+      surfaces.emplace_back();
+      surfaces.back().Point = triangles[i];
+    }
+    owner[i / 3] = inserted.first->second;
+    Surface& surface = surfaces[owner[i / 3]];
     double corners[3][3];
     for (int k = 0; k < 3; ++k)
     {
@@ -193,20 +202,117 @@ int vtkPhongClosedSurface::Orient(const std::vector<unsigned int>& triangles, vt
     vtkMath::Cross(corners[1], corners[2], cross);
     surface.Volume += vtkMath::Dot(corners[0], cross) / 6.0;
   }
-  int orientation = 0;
-  for (const auto& entry : surfaces)
+  return surfaces;
+}
+
+//------------------------------------------------------------------------------
+// +1 or -1: the sign of the largest surface's volume, the solid's orientation. A surface of
+// the other sign is a cavity (a contour around a minimum, a hollow solid's inner wall): it
+// must lie inside the solid, or the region it bounds would be inside out. Flat surfaces
+// (both sides of a sheet) bound no region and count for neither.
+int vtkPhongClosedSurface::Orient(const std::vector<unsigned int>& triangles, vtkPolyData* input)
+{
+  std::vector<size_t> owner;
+  const std::vector<Surface> surfaces = FindSurfaces(triangles, input, owner);
+  auto isFlat = [](const Surface& surface)
   {
-    const double diagonal = entry.second.Box.GetDiagonalLength();
-    const double volume = entry.second.Volume;
-    const int sign = volume > 0.0 ? 1 : -1;
-    if (std::abs(volume) <= FlatVolumeShare * diagonal * diagonal * diagonal ||
-      (orientation != 0 && sign != orientation))
+    const double diagonal = surface.Box.GetDiagonalLength();
+    return std::abs(surface.Volume) <= FlatVolumeShare * diagonal * diagonal * diagonal;
+  };
+  const auto largest = std::max_element(surfaces.begin(), surfaces.end(),
+    [](const Surface& a, const Surface& b) { return std::abs(a.Volume) < std::abs(b.Volume); });
+  if (largest == surfaces.end() || isFlat(*largest))
+  {
+    return 0;
+  }
+  const int orientation = largest->Volume > 0.0 ? 1 : -1;
+  size_t tests = 0;
+  for (size_t k = 0; k < surfaces.size(); ++k)
+  {
+    if (isFlat(surfaces[k]) || (surfaces[k].Volume > 0.0) == (orientation > 0))
+    {
+      continue;
+    }
+    tests += owner.size();
+    if (tests > MaximumEnclosureTests ||
+      orientation * WindingNumber(surfaces[k].Point, k, triangles, owner, input) < 1)
     {
       return 0;
     }
-    orientation = sign;
   }
   return orientation;
+}
+
+//------------------------------------------------------------------------------
+// The winding number, at the point `point` of surface `skip`, of the other surfaces: how many
+// times they enclose it, counted along a ray as the faces it leaves through (normal along the
+// ray) less those it enters through. A ray that grazes an edge is tried again in another
+// direction; 0 when every direction grazes one.
+int vtkPhongClosedSurface::WindingNumber(vtkIdType point, size_t skip,
+  const std::vector<unsigned int>& triangles, const std::vector<size_t>& owner,
+  vtkPolyData* input)
+{
+  static const double directions[3][3] = { { 1.0, 0.3217, 0.1793 }, { -0.2711, 1.0, 0.4127 },
+    { 0.3331, -0.5177, -1.0 } };
+  vtkPoints* points = input->GetPoints();
+  double origin[3];
+  points->GetPoint(point, origin);
+  for (const auto& direction : directions)
+  {
+    int winding = 0;
+    bool grazed = false;
+    for (size_t t = 0; t < owner.size() && !grazed; ++t)
+    {
+      if (owner[t] != skip)
+      {
+        double corners[3][3];
+        for (int k = 0; k < 3; ++k)
+        {
+          points->GetPoint(triangles[3 * t + k], corners[k]);
+        }
+        winding += RayCrossing(origin, direction, corners, grazed);
+      }
+    }
+    if (!grazed)
+    {
+      return winding;
+    }
+  }
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+// Whether the ray from `origin` along `direction` crosses the triangle: +1 leaving through its
+// front (its normal, by the right-hand rule, along the ray), -1 entering, 0 missing it (the
+// Moller-Trumbore test); `grazed` set when it passes through an edge or a corner.
+int vtkPhongClosedSurface::RayCrossing(
+  const double origin[3], const double direction[3], const double corners[3][3], bool& grazed)
+{
+  double edge1[3], edge2[3], h[3], s[3], q[3];
+  vtkMath::Subtract(corners[1], corners[0], edge1);
+  vtkMath::Subtract(corners[2], corners[0], edge2);
+  vtkMath::Cross(direction, edge2, h);
+  const double determinant = vtkMath::Dot(edge1, h); // minus the normal's component along the ray
+  if (determinant == 0.0)
+  {
+    return 0; // parallel
+  }
+  vtkMath::Subtract(origin, corners[0], s);
+  const double u = vtkMath::Dot(s, h) / determinant;
+  vtkMath::Cross(s, edge1, q);
+  const double v = vtkMath::Dot(direction, q) / determinant;
+  const double t = vtkMath::Dot(edge2, q) / determinant;
+  if (u < 0.0 || v < 0.0 || u + v > 1.0 || t <= 0.0)
+  {
+    return 0;
+  }
+  const double tolerance = 1e-12;
+  if (u < tolerance || v < tolerance || u + v > 1.0 - tolerance || t < tolerance)
+  {
+    grazed = true;
+    return 0;
+  }
+  return determinant < 0.0 ? 1 : -1;
 }
 
 //------------------------------------------------------------------------------

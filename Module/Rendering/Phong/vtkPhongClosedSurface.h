@@ -14,9 +14,13 @@
  *   triangle with two corners at one point, which covers no pixel, is left out.
  * - Closed and consistently oriented: every edge is used exactly twice, once in each
  *   direction. Any point that is not finite rules culling out.
- * - Each connected surface encloses a volume of one sign, the same for all of them: all
- *   outward (the usual orientation) or all inward. Mixed signs (a hollow solid's inner
- *   wall) and flat closed surfaces (volume about 0) rule culling out.
+ * - The surfaces bound a solid, never its inside-out: the largest connected surface's
+ *   volume gives the orientation (outward, the usual, or inward), and every surface
+ *   enclosing a volume of the other sign (a cavity: a contour around a minimum, a hollow
+ *   solid's inner wall) lies inside the others, a winding number counted along a ray. A
+ *   cavity outside (a surface turned inside out beside the others) rules culling out, as do
+ *   cavities too many to check (more than 16M ray-triangle tests). Flat closed surfaces
+ *   (both sides of a sheet, volume about 0) bound nothing and count for neither.
  *
  * Per view, HiddenFaces() answers whether the camera sees all of it from outside: every
  * corner of the drawn bounds lies beyond the near plane in the projection VTK draws with
@@ -33,7 +37,8 @@
 #ifndef vtkPhongClosedSurface_h
 #define vtkPhongClosedSurface_h
 
-#include "vtkType.h" // for vtkMTimeType
+#include "vtkBoundingBox.h" // for vtkBoundingBox
+#include "vtkType.h"        // for vtkMTimeType
 
 #include <cstddef> // for size_t
 #include <vector>  // for std::vector
@@ -70,7 +75,19 @@ private:
   static bool WeldTriangles(
     std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded);
   static bool IsClosedAndConsistent(const std::vector<unsigned int>& triangles);
+  struct Surface
+  {
+    double Volume = 0.0;
+    vtkBoundingBox Box;
+    vtkIdType Point = 0; // one of its points
+  };
+  static std::vector<Surface> FindSurfaces(
+    const std::vector<unsigned int>& triangles, vtkPolyData* input, std::vector<size_t>& owner);
   static int Orient(const std::vector<unsigned int>& triangles, vtkPolyData* input);
+  static int WindingNumber(vtkIdType point, size_t skip, const std::vector<unsigned int>& triangles,
+    const std::vector<size_t>& owner, vtkPolyData* input);
+  static int RayCrossing(
+    const double origin[3], const double direction[3], const double corners[3][3], bool& grazed);
 
   int Orientation = 0;
   vtkMTimeType BuiltAt = 0;

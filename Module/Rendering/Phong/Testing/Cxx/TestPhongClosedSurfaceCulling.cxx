@@ -4,8 +4,9 @@
 // also states whether culling must be used.
 // - Used: a sphere, its cells reversed (culls the front faces), mirrored by the actor's
 //   matrix, both, in parallel projection, with cell colours, with the depth pre-pass, a cube
-//   whose points are split per face (welded back), and CGAL's closed meshes (files nobody
-//   here wrote, read without normals: the mapper computes and splits them).
+//   whose points are split per face (welded back), a hollow sphere, contours with cavities,
+//   and CGAL's closed meshes (files nobody here wrote, read without normals: the mapper
+//   computes and splits them).
 // - Not used, and still identical: the camera inside the sphere or the near plane cutting it
 //   (the inside shows), an open sphere, CGAL's meshes with holes, a sphere beside a reversed
 //   one, a clipping plane, translucency, edges, wireframe, strips, a wide line beside the
@@ -15,10 +16,12 @@
 
 #include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
+#include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
 #include "vtkLineSource.h"
 #include "vtkPhongOFFReader.h"
 #include "vtkPlane.h"
+#include "vtkRTAnalyticSource.h"
 #include "vtkReverseSense.h"
 #include "vtkStripper.h"
 #include "vtkTransform.h"
@@ -199,6 +202,25 @@ void CheckClosedSurfaces(Checks& checks)
     prePass.Compare("sphere, depth pre-pass", true, checks);
   }
   CullingScene(SplitCube()).Compare("cube, points split per face", true, checks);
+  CullingScene(Appended(sphere, Reversed(vtkPhongTest::MakeSphere(32, 0.3))))
+    .Compare("a hollow sphere (a reversed one inside)", true, checks);
+}
+
+// Contours of vtkRTAnalyticSource: closed, and around its minima the contour turns the
+// other way (cavities inside the solid), with a few flat closed pieces (volume 0). Nested
+// shells in one polydata, as the depth-complexity benchmark draws them.
+void CheckContours(Checks& checks)
+{
+  vtkNew<vtkRTAnalyticSource> source;
+  source->SetWholeExtent(-40, 40, -40, 40, -40, 40);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(source->GetOutputPort());
+  contour->SetValue(0, 200.0);
+  contour->Update();
+  CullingScene(contour->GetOutput()).Compare("a contour with cavities", true, checks, 4, nullptr, 2);
+  contour->GenerateValues(4, 200.0, 254.0);
+  contour->Update();
+  CullingScene(contour->GetOutput()).Compare("4 nested contours", true, checks, 4, nullptr, 2);
 }
 
 void CheckViewsFromInside(Checks& checks)
@@ -315,6 +337,7 @@ int TestPhongClosedSurfaceCulling(int argc, char* argv[])
   }
   Checks checks;
   CheckClosedSurfaces(checks);
+  CheckContours(checks);
   CheckViewsFromInside(checks);
   CheckOtherSurfaces(checks);
   CheckSettingsThatShowBackFaces(checks);
