@@ -181,16 +181,21 @@ bool vtkPhongDepthPrePass::Decide(
     usePrePass = true; // then probe the pre-pass
   }
   else if (!this->Decided || this->Refreshing || evaluatedLights != this->LightsAtDecision ||
-    triangles != this->TrianglesAtDecision)
+    triangles != this->TrianglesAtDecision ||
+    std::abs(depthTriangles - this->DepthTrianglesAtDecision) >
+      ReprobeChange * this->DepthTrianglesAtDecision)
   {
     // A new decision: the first, after a refresh, or the work per fragment changed (the
-    // counts still hold: they depend on the view and the geometry, not on the lights).
+    // counts still hold: they depend on the view and the geometry, not on the lights), or
+    // the depth pass's triangles did: the first decision, a frame after the probe, still
+    // counts every triangle, before the occlusion counts of the clusters are in.
     this->DecidedPrePass =
       Pays(this->ShadedCount, this->VisibleCount, depthTriangles, evaluatedLights);
     this->Decided = true;
     this->Refreshing = false;
     this->LightsAtDecision = evaluatedLights;
     this->TrianglesAtDecision = triangles;
+    this->DepthTrianglesAtDecision = depthTriangles;
     this->SeenAtDecision = this->DecidedPrePass ? this->VisibleCount : this->ShadedCount;
     this->FramesSinceDecision = 0;
     usePrePass = this->DecidedPrePass;
@@ -304,4 +309,5 @@ void vtkPhongDepthPrePass::Reset()
   this->FramesSinceDecision = 0;
   this->LightsAtDecision = 0;
   this->TrianglesAtDecision = 0.0;
+  this->DepthTrianglesAtDecision = 0.0;
 }

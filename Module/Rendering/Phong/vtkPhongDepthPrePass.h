@@ -131,6 +131,7 @@ private:
   int FramesSinceDecision = 0;
   int LightsAtDecision = 0;
   double TrianglesAtDecision = 0.0;
+  double DepthTrianglesAtDecision = 0.0;
 };
 
 #endif

@@ -132,6 +132,7 @@ void vtkPhongVisibleClusters::Build(const std::vector<unsigned int>& indices, vt
   this->SortedTriangles->Upload(sorted, vtkOpenGLBufferObject::ElementArrayBuffer);
   this->SortedTriangles->IndexCount = sorted.size();
   this->Triangles = static_cast<double>(triangles);
+  this->CountAll = true;
   if (this->Queries.size() < this->Clusters.size())
   {
     const size_t had = this->Queries.size();
@@ -318,11 +319,14 @@ void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act)
   // A query costs (llvmpipe marks its start and end in every tile of the window), and so does
   // a draw: a seen cluster is counted every RecountInterval frames, a hidden one each time it
   // is drawn, and the seen clusters not counted are drawn first, in runs.
+  // The first draw after a build counts them all: Automatic decides from the next frame's
+  // counts whether the pre-pass pays, and it pays only once the hidden clusters are known.
   std::vector<bool> counted(this->Clusters.size(), false);
   for (size_t k = 0; counting && k < counted.size(); ++k)
   {
-    counted[k] = !this->Clusters[k].Seen || (k + this->Frame) % RecountInterval == 0;
+    counted[k] = !this->Clusters[k].Seen || this->CountAll || (k + this->Frame) % RecountInterval == 0;
   }
+  this->CountAll = this->CountAll && !counting;
   this->SortedTriangles->Bind();
   this->TrianglesDrawn = 0.0;
   this->DrawUncountedRuns(counted);

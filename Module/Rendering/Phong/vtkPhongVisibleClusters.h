@@ -131,6 +131,7 @@ private:
   vtkNew<vtkOpenGLIndexBufferObject> SortedTriangles;
   std::vector<unsigned int> Queries; // one per cluster
   bool Counting = false;             // queries were issued and not read yet
+  bool CountAll = false;             // the next draw counts every cluster (just built)
   size_t NextRetest = 0;             // where the hidden clusters' round robin goes on
   size_t Frame = 0;                  // depth passes drawn, for the seen clusters' recounts
   vtkMTimeType BuiltAt = 0;
