@@ -10,7 +10,10 @@
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPhongVisibleClusters.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkPoints.h"
+#include "vtkPolygon.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 #include "vtk_glew.h"
@@ -52,13 +55,37 @@ void vtkPhongClosedSurface::Update(
   this->IndexCount = triangles->IndexCount;
   this->Orientation = 0;
   std::vector<unsigned int> indices;
-  if (!input || !input->GetPoints() ||
+  if (!input || !input->GetPoints() || HasConcavePolygons(input) ||
     !vtkPhongVisibleClusters::ReadIndices(triangles, indices) ||
     !WeldTriangles(indices, WeldPoints(input)) || !IsClosedAndConsistent(indices))
   {
     return;
   }
   this->Orientation = Orient(indices, input);
+}
+
+//------------------------------------------------------------------------------
+// VTK fans each polygon into triangles from its first point: a concave polygon's fan
+// overlaps itself with triangles turned over, whose edges pair up as a closed surface's do.
+bool vtkPhongClosedSurface::HasConcavePolygons(vtkPolyData* input)
+{
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  std::vector<vtkIdType> ids;
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size = 0;
+    const vtkIdType* cell = nullptr;
+    cells->GetCurrentCell(size, cell);
+    if (size > 3)
+    {
+      ids.assign(cell, cell + size);
+      if (!vtkPolygon::IsConvex(input->GetPoints(), static_cast<int>(size), ids.data()))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------

@@ -10,6 +10,8 @@
  *
  * This class decides, once per upload of VTK's triangle index buffer, whether the triangles
  * are closed surfaces:
+ * - No concave polygon: VTK fans polygons into triangles, and a concave one's fan overlaps
+ *   itself with triangles turned over.
  * - Points at the same position are one point (split normals duplicate them), and a
  *   triangle with two corners at one point, which covers no pixel, is left out.
  * - Closed and consistently oriented: every edge is used exactly twice, once in each
@@ -71,6 +73,7 @@ public:
   unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act, const double bounds[6]) const;
 
 private:
+  static bool HasConcavePolygons(vtkPolyData* input);
   static std::vector<vtkIdType> WeldPoints(vtkPolyData* input);
   static bool WeldTriangles(
     std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded);
