@@ -2,6 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkCellData.h"
+#include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
@@ -26,6 +27,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtk_glew.h"
 
 vtkStandardNewMacro(vtkPhongPolyDataMapper);
@@ -337,6 +339,24 @@ void vtkPhongPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
     this->Internal->NamedPointIds = false;
   }
   this->Superclass::RenderPieceStart(ren, act);
+}
+
+//------------------------------------------------------------------------------
+// VTK's BuildBufferObjects maps the scalars of GetInput(), but draws CurrentInput: the
+// normals' output, whose split points have ids past the input's, would read colours (and
+// colour texture coordinates) past their end.
+vtkUnsignedCharArray* vtkPhongPolyDataMapper::MapScalars(double alpha)
+{
+  int cellFlag = 0;
+  return this->MapScalars(alpha, cellFlag);
+}
+
+//------------------------------------------------------------------------------
+vtkUnsignedCharArray* vtkPhongPolyDataMapper::MapScalars(double alpha, int& cellFlag)
+{
+  vtkDataSet* drawn =
+    this->UsedGeneratedNormals && this->CurrentInput ? this->CurrentInput : this->GetInput();
+  return this->Superclass::MapScalars(drawn, alpha, cellFlag);
 }
 
 //------------------------------------------------------------------------------

@@ -286,6 +286,16 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
+  ///@{
+  /**
+   * The colours of the data set drawn: the normals' output where the mapper computed the
+   * normals (its points split at sharp edges), the input otherwise.
+   */
+  using Superclass::MapScalars;
+  vtkUnsignedCharArray* MapScalars(double alpha) override;
+  vtkUnsignedCharArray* MapScalars(double alpha, int& cellFlag) override;
+  ///@}
+
   /**
    * Copy the settings of another mapper, the debug view included.
    */
