@@ -689,8 +689,8 @@ struct ShellContenders
     auto stock = MakeContenders(mesh, VTK_PHONG, false, renderer);
     this->Actors = { stock[Unlit], stock[Stock] };
     using Mapper = vtkPhongPolyDataMapper;
-    const int modes[4] = { Mapper::DepthPrePassOff, Mapper::DepthPrePassOn,
-      Mapper::DepthPrePassOn, Mapper::DepthPrePassAutomatic };
+    const int modes[4] = { Mapper::DepthPrePassOff, Mapper::DepthPrePassOn, Mapper::DepthPrePassOn,
+      Mapper::DepthPrePassAutomatic };
     for (int k = 0; k < 4; ++k)
     {
       vtkNew<Mapper> mapper;
@@ -748,10 +748,10 @@ vtkSmartPointer<vtkPolyData> Shells(int count, bool innerFirst)
 }
 
 // Depth complexity: the lighting's share of the frame (frame minus the same geometry's unlit
-// floor, with the back faces culled where vtkPhong culls them) for 8 nested shells in either order against the outer shell alone, under 1
-// directional and 8 mixed lights: stock, vtkPhong without the pre-pass, with it on (its depth
-// pass drawing every triangle, then only those seen in the last frame) and automatic (whether
-// Automatic used it, and the depth complexity it measured).
+// floor, with the back faces culled where vtkPhong culls them) for 8 nested shells in either order
+// against the outer shell alone, under 1 directional and 8 mixed lights: stock, vtkPhong without
+// the pre-pass, with it on (its depth pass drawing every triangle, then only those seen in the last
+// frame) and automatic (whether Automatic used it, and the depth complexity it measured).
 void ShellSection(bool quick)
 {
   const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
@@ -787,9 +787,9 @@ void ShellSection(bool quick)
       vtkPhongPolyDataMapper* automatic = contenders.Mappers.back();
       std::printf("%-18s %-13s %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %7.1f %7.1f %7.1f %7.1f "
                   "%7.1f %4.2f %3.0f%%%s%s\n",
-        names[which], set, 1e3 * t[0], 1e3 * t[6], 1e3 * t[1], 1e3 * t[2], 1e3 * t[3],
-        1e3 * t[4], 1e3 * t[5], 1e3 * lit[0], 1e3 * lit[1], 1e3 * lit[2], 1e3 * lit[3],
-        1e3 * lit[4], automatic->GetDepthComplexity(),
+        names[which], set, 1e3 * t[0], 1e3 * t[6], 1e3 * t[1], 1e3 * t[2], 1e3 * t[3], 1e3 * t[4],
+        1e3 * t[5], 1e3 * lit[0], 1e3 * lit[1], 1e3 * lit[2], 1e3 * lit[3], 1e3 * lit[4],
+        automatic->GetDepthComplexity(),
         100.0 * contenders.Mappers[2]->GetDepthPassTriangles() / mesh->GetNumberOfPolys(),
         automatic->GetUsedDepthPrePass() ? "+" : "", culled ? " bf" : "");
       if (which == 0)

@@ -10,6 +10,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -85,6 +86,21 @@ inline vtkSmartPointer<vtkPolyData> MakeSphere(int resolution, double radius = 0
   sphere->SetPhiResolution(resolution);
   sphere->Update();
   return sphere->GetOutput();
+}
+
+// A 32 x 32 sphere coloured in bands of 7 cells (cell scalars, red and blue).
+inline vtkSmartPointer<vtkPolyData> MakeBandedSphere(double radius = 0.5)
+{
+  auto banded = MakeSphere(32, radius);
+  vtkNew<vtkUnsignedCharArray> bands;
+  bands->SetNumberOfComponents(3);
+  for (vtkIdType cell = 0; cell < banded->GetNumberOfCells(); ++cell)
+  {
+    const unsigned char colour[2][3] = { { 220, 60, 60 }, { 60, 90, 220 } };
+    bands->InsertNextTypedTuple(colour[(cell / 7) % 2]);
+  }
+  banded->GetCellData()->SetScalars(bands);
+  return banded;
 }
 
 // A square in the z = 0 plane, facing +z, subdivided so per-vertex lighting can resolve it.

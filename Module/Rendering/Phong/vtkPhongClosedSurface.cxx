@@ -2,6 +2,8 @@
 
 #include "vtkActor.h"
 #include "vtkBoundingBox.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
@@ -10,11 +12,9 @@
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPhongVisibleClusters.h"
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkPoints.h"
-#include "vtkPolygon.h"
 #include "vtkPolyData.h"
+#include "vtkPolygon.h"
 #include "vtkRenderer.h"
 #include "vtk_glew.h"
 
@@ -22,8 +22,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
-#include <unordered_map>
 
 namespace
 {
@@ -107,7 +105,8 @@ std::vector<vtkIdType> vtkPhongClosedSurface::WeldPoints(vtkPolyData* input)
       order.push_back(p);
     }
   }
-  std::sort(order.begin(), order.end(), [&positions](vtkIdType a, vtkIdType b)
+  std::sort(order.begin(), order.end(),
+    [&positions](vtkIdType a, vtkIdType b)
     { return positions[a] != positions[b] ? positions[a] < positions[b] : a < b; });
   std::vector<vtkIdType> welded(count, -1);
   for (size_t k = 0; k < order.size(); ++k)
@@ -186,37 +185,20 @@ bool vtkPhongClosedSurface::IsClosedAndConsistent(const std::vector<unsigned int
 std::vector<vtkPhongClosedSurface::Surface> vtkPhongClosedSurface::FindSurfaces(
   const std::vector<unsigned int>& triangles, vtkPolyData* input, std::vector<size_t>& owner)
 {
-  std::vector<vtkIdType> parent(input->GetNumberOfPoints());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&parent](vtkIdType p)
-  {
-    while (parent[p] != p)
-    {
-      parent[p] = parent[parent[p]];
-      p = parent[p];
-    }
-    return p;
-  };
-  for (size_t i = 0; i < triangles.size(); i += 3)
-  {
-    parent[root(triangles[i + 1])] = root(triangles[i]);
-    parent[root(triangles[i + 2])] = root(triangles[i]);
-  }
+  const std::vector<std::uint32_t> components =
+    vtkPhongVisibleClusters::ConnectedComponents(triangles, input);
   vtkPoints* points = input->GetPoints();
   double origin[3];
   vtkBoundingBox(input->GetBounds()).GetCenter(origin);
-  std::unordered_map<vtkIdType, size_t> numbers;
   std::vector<Surface> surfaces;
-  owner.resize(triangles.size() / 3);
+  owner.assign(components.begin(), components.end());
   for (size_t i = 0; i < triangles.size(); i += 3)
   {
-    const auto inserted = numbers.emplace(root(triangles[i]), surfaces.size());
-    if (inserted.second)
+    if (owner[i / 3] == surfaces.size()) // numbered in order of first appearance
     {
       surfaces.emplace_back();
       surfaces.back().Point = triangles[i];
     }
-    owner[i / 3] = inserted.first->second;
     Surface& surface = surfaces[owner[i / 3]];
     double corners[3][3];
     for (int k = 0; k < 3; ++k)
@@ -276,8 +258,7 @@ int vtkPhongClosedSurface::Orient(const std::vector<unsigned int>& triangles, vt
 // ray) less those it enters through. A ray that grazes an edge is tried again in another
 // direction; 0 when every direction grazes one.
 int vtkPhongClosedSurface::WindingNumber(vtkIdType point, size_t skip,
-  const std::vector<unsigned int>& triangles, const std::vector<size_t>& owner,
-  vtkPolyData* input)
+  const std::vector<unsigned int>& triangles, const std::vector<size_t>& owner, vtkPolyData* input)
 {
   static const double directions[3][3] = { { 1.0, 0.3217, 0.1793 }, { -0.2711, 1.0, 0.4127 },
     { 0.3331, -0.5177, -1.0 } };

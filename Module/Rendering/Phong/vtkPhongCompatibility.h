@@ -26,6 +26,13 @@
  */
 #define VTKPHONG_VTK_9_3 (VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0))
 
+/**
+ * Before VTK 9.2 (VTK 9.1, Debian 12's): shader replacements may also be set on the mapper
+ * (vtkOpenGLPolyDataMapper::AddShaderReplacement, kept in its LegacyShaderProperty); VTK
+ * removed them in October 2021, before ParaView 5.11's snapshot.
+ */
+#define VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS (VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 2, 0))
+
 namespace vtkPhongCompatibility
 {
 /**

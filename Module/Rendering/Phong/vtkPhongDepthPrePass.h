@@ -79,7 +79,8 @@ public:
   /**
    * The break-even: whether the pre-pass pays for a draw whose plain version shades `shaded`
    * fragments of which `visible` remain with the pre-pass, whose depth pass draws
-   * `triangles` triangles, under `evaluatedLights` lights (the cost model is in vtkPhongDepthPrePass.cxx).
+   * `triangles` triangles, under `evaluatedLights` lights (the cost model is in
+   * vtkPhongDepthPrePass.cxx).
    */
   static bool Pays(double shaded, double visible, double triangles, int evaluatedLights);
 

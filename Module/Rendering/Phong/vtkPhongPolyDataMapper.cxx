@@ -3,8 +3,8 @@
 #include "vtkActor.h"
 #include "vtkCellData.h"
 #include "vtkFloatArray.h"
-#include "vtkMath.h"
 #include "vtkInformation.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
@@ -13,7 +13,6 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderProperty.h"
 #include "vtkOpenGLState.h"
-#include "vtkRenderWindow.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPhongClampedSetter.h"
 #include "vtkPhongClosedSurface.h"
@@ -25,6 +24,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
 #include "vtkUnsignedCharArray.h"
@@ -406,8 +406,7 @@ unsigned int vtkPhongPolyDataMapper::HiddenFaces(vtkRenderer* ren, vtkActor* act
     this->Primitives[PrimitiveTriStrips].IBO->IndexCount == 0 && !linesOfTriangles &&
     !pointsOfTriangles;
   if (!this->ClosedSurfaceCulling || !plainOpaqueSurface || !onlyClosedTriangles ||
-    this->HasShaderCodeOfUser(act) ||
-    this->GetNumberOfClippingPlanes() > 0 || ren->GetSelector() ||
+    this->HasShaderCodeOfUser(act) || this->GetNumberOfClippingPlanes() > 0 || ren->GetSelector() ||
     (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())) || !this->CurrentInput)
   {
     return 0;
@@ -420,7 +419,7 @@ unsigned int vtkPhongPolyDataMapper::HiddenFaces(vtkRenderer* ren, vtkActor* act
 
 //------------------------------------------------------------------------------
 // Shader code of the user's: replacements or whole shaders on the actor's shader property, or
-// (before VTK 9.3) on the mapper itself.
+// (before VTK 9.2) on the mapper itself.
 bool vtkPhongPolyDataMapper::HasShaderCodeOfUser(vtkActor* act)
 {
   vtkShaderProperty* shaders = act->GetShaderProperty();
@@ -430,7 +429,7 @@ bool vtkPhongPolyDataMapper::HasShaderCodeOfUser(vtkActor* act)
   {
     return true;
   }
-#if !VTKPHONG_VTK_9_3
+#if VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS
   return this->LegacyShaderProperty &&
     this->LegacyShaderProperty->GetNumberOfShaderReplacements() > 0;
 #else
@@ -547,8 +546,9 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "UsedDepthPrePass: " << (this->UsedDepthPrePass ? "yes" : "no") << "\n";
   os << indent << "DepthComplexity: " << this->Internal->PrePass.GetDepthComplexity() << "\n";
-  os << indent << "DepthPrePassOcclusionCulling: "
-     << (this->DepthPrePassOcclusionCulling ? "On" : "Off") << "\n";
+  os << indent
+     << "DepthPrePassOcclusionCulling: " << (this->DepthPrePassOcclusionCulling ? "On" : "Off")
+     << "\n";
   os << indent << "DepthPassTriangles: " << this->DepthPassTriangles << "\n";
   os << indent << "ClosedSurfaceCulling: " << (this->ClosedSurfaceCulling ? "On" : "Off") << "\n";
   os << indent << "UsedClosedSurfaceCulling: " << (this->UsedClosedSurfaceCulling ? "yes" : "no")

@@ -324,7 +324,8 @@ void vtkPhongVisibleClusters::Draw(vtkRenderer* ren, vtkActor* act)
   std::vector<bool> counted(this->Clusters.size(), false);
   for (size_t k = 0; counting && k < counted.size(); ++k)
   {
-    counted[k] = !this->Clusters[k].Seen || this->CountAll || (k + this->Frame) % RecountInterval == 0;
+    counted[k] =
+      !this->Clusters[k].Seen || this->CountAll || (k + this->Frame) % RecountInterval == 0;
   }
   this->CountAll = this->CountAll && !counting;
   this->SortedTriangles->Bind();

@@ -81,11 +81,19 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
   /**
+   * Each triangle's connected component (triangles sharing a point), numbered in order of
+   * first appearance. Also used by vtkPhongClosedSurface.
+   */
+  static std::vector<std::uint32_t> ConnectedComponents(
+    const std::vector<unsigned int>& indices, vtkPolyData* input);
+
+  /**
    * The indices of VTK's triangle index buffer exactly as it uploaded them (polygons
    * triangulated, invalid cells collapsed); false when there are none. Also used by
    * vtkPhongClosedSurface.
    */
-  static bool ReadIndices(vtkOpenGLIndexBufferObject* triangles, std::vector<unsigned int>& indices);
+  static bool ReadIndices(
+    vtkOpenGLIndexBufferObject* triangles, std::vector<unsigned int>& indices);
 
   ///@{
   /**
@@ -113,10 +121,8 @@ private:
   };
 
   void Build(const std::vector<unsigned int>& indices, vtkPolyData* input);
-  void Split(std::vector<std::uint32_t>& order, const std::vector<double>& centroids,
-    size_t first, size_t last, size_t target);
-  static std::vector<std::uint32_t> ConnectedComponents(
-    const std::vector<unsigned int>& indices, vtkPolyData* input);
+  void Split(std::vector<std::uint32_t>& order, const std::vector<double>& centroids, size_t first,
+    size_t last, size_t target);
   static std::vector<double> Centroids(
     const std::vector<unsigned int>& indices, vtkPolyData* input);
   void ComputeBounds(const std::vector<unsigned int>& sorted, vtkPolyData* input);

@@ -15,7 +15,6 @@
 #include "vtkPhongTestUtilities.h"
 
 #include "vtkAppendPolyData.h"
-#include "vtkCellData.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
 #include "vtkLineSource.h"
@@ -27,7 +26,6 @@
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkTriangleFilter.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <cmath>
 #include <functional>
@@ -162,20 +160,6 @@ vtkSmartPointer<vtkPolyData> SplitCube()
   return triangles->GetOutput();
 }
 
-vtkSmartPointer<vtkPolyData> BandedSphere()
-{
-  auto banded = vtkPhongTest::MakeSphere(32);
-  vtkNew<vtkUnsignedCharArray> bands;
-  bands->SetNumberOfComponents(3);
-  for (vtkIdType cell = 0; cell < banded->GetNumberOfCells(); ++cell)
-  {
-    const unsigned char colour[2][3] = { { 220, 60, 60 }, { 60, 90, 220 } };
-    bands->InsertNextTypedTuple(colour[(cell / 7) % 2]);
-  }
-  banded->GetCellData()->SetScalars(bands);
-  return banded;
-}
-
 void CheckClosedSurfaces(Checks& checks)
 {
   auto sphere = vtkPhongTest::MakeSphere(48);
@@ -195,7 +179,7 @@ void CheckClosedSurfaces(Checks& checks)
     parallel.View.Renderer->ResetCamera();
     parallel.Compare("sphere, parallel projection", true, checks);
   }
-  CullingScene(BandedSphere()).Compare("sphere, cell colours", true, checks);
+  CullingScene(vtkPhongTest::MakeBandedSphere()).Compare("sphere, cell colours", true, checks);
   {
     CullingScene prePass(sphere);
     prePass.Mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOn);
@@ -217,7 +201,8 @@ void CheckContours(Checks& checks)
   contour->SetInputConnection(source->GetOutputPort());
   contour->SetValue(0, 200.0);
   contour->Update();
-  CullingScene(contour->GetOutput()).Compare("a contour with cavities", true, checks, 4, nullptr, 2);
+  CullingScene(contour->GetOutput())
+    .Compare("a contour with cavities", true, checks, 4, nullptr, 2);
   contour->GenerateValues(4, 200.0, 254.0);
   contour->Update();
   CullingScene(contour->GetOutput()).Compare("4 nested contours", true, checks, 4, nullptr, 2);
@@ -305,9 +290,9 @@ void CheckSettingsThatShowBackFaces(Checks& checks)
 
 // Files nobody here wrote, without normals (the mapper computes and splits them at sharp
 // edges): closed meshes are culled; meshes with holes are not, nor a closed one with a
-// concave polygon (corner_poly: VTK fans it into overlapping triangles, turned over). Their folds and thin parts
-// meet at grazing angles, where a plain draw lets a back face win a pixel's depth test by
-// rounding now and then (1 or 2 pixels in 5 views of 240x240 on llvmpipe): culled, the
+// concave polygon (corner_poly: VTK fans it into overlapping triangles, turned over). Their folds
+// and thin parts meet at grazing angles, where a plain draw lets a back face win a pixel's depth
+// test by rounding now and then (1 or 2 pixels in 5 views of 240x240 on llvmpipe): culled, the
 // front face shows there.
 void CheckCGALMeshes(const std::string& directory, Checks& checks)
 {

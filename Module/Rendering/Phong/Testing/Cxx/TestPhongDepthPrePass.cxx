@@ -148,27 +148,12 @@ bool FloatEqual(vtkImageData* a, vtkImageData* b)
   return ra->GetNumberOfValues() == rb->GetNumberOfValues();
 }
 
-// A sphere coloured in bands of cells (cell scalars).
-vtkSmartPointer<vtkPolyData> BandedSphere(double radius)
-{
-  auto banded = vtkPhongTest::MakeSphere(32, radius);
-  vtkNew<vtkUnsignedCharArray> bands;
-  bands->SetNumberOfComponents(3);
-  for (vtkIdType cell = 0; cell < banded->GetNumberOfCells(); ++cell)
-  {
-    const unsigned char colour[2][3] = { { 220, 60, 60 }, { 60, 90, 220 } };
-    bands->InsertNextTypedTuple(colour[(cell / 7) % 2]);
-  }
-  banded->GetCellData()->SetScalars(bands);
-  return banded;
-}
-
 // Cell colours are fetched by primitive id from an offset VTK advances as it draws: the lit
 // draw after the depth pass must start from the same offset, or it fetches nothing and
 // discards every fragment.
 void CheckCellColours(PrePassScene& scene, vtkPhongTest::Checks& checks)
 {
-  auto banded = BandedSphere(12.0);
+  auto banded = vtkPhongTest::MakeBandedSphere(12.0);
   scene.ShellActor->VisibilityOff();
   vtkActor* ball = vtkPhongTest::AddActor(scene.View, banded);
   auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(ball->GetMapper());
