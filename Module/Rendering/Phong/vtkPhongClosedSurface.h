@@ -43,6 +43,7 @@
 #include "vtkType.h"        // for vtkMTimeType
 
 #include <cstddef> // for size_t
+#include <cstdint> // for std::uint64_t
 #include <vector>  // for std::vector
 
 class vtkActor;
@@ -78,6 +79,7 @@ private:
   static bool WeldTriangles(
     std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded);
   static bool IsClosedAndConsistent(const std::vector<unsigned int>& triangles);
+  static void RadixSort(std::vector<std::uint64_t>& keys, int bits);
   struct Surface
   {
     double Volume = 0.0;

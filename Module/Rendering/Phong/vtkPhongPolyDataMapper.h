@@ -235,7 +235,7 @@ public:
    * vertices shown, clipping planes, shader code of the user's, triangle strips, wide lines,
    * hardware selection, render passes (a shadow map is drawn from the light) or when the
    * actor's property culls faces itself (vtkPhongClosedSurface.h). The analysis costs about
-   * 0.2 s per million triangles, once per upload. UsedClosedSurfaceCulling: whether the last
+   * 0.1 s per million triangles, once per upload. UsedClosedSurfaceCulling: whether the last
    * draw culled.
    */
   vtkSetMacro(ClosedSurfaceCulling, bool);
