@@ -615,6 +615,21 @@ void MeshSection(const std::vector<std::string>& meshFiles, bool quick)
 }
 }
 
+// The unlit floor with the back faces culled (VTK's own property setting, on a copy of the
+// unlit contender's property): the least a frame that culls them can cost. The renderer
+// keeps the actor.
+vtkActor* AddCulledFloor(vtkPolyData* mesh, vtkProperty* unlit, vtkRenderer* renderer)
+{
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->DeepCopy(unlit);
+  actor->GetProperty()->BackfaceCullingOn();
+  renderer->AddActor(actor);
+  return actor;
+}
+
 // Two more contenders of the kinds section: vtkPhong drawing the closed surfaces' back faces
 // (the all-features actor, specialized again) and the unlit floor with the back faces culled
 // (VTK's own property setting), the least a frame that culls them can cost.
@@ -625,14 +640,8 @@ void AddCullingContenders(MeshContest& contest, vtkPolyData* mesh)
   unculled->SetShaderSpecialization(true);
   unculled->SetClosedSurfaceCulling(false);
   contest.Race.Actors.push_back(contest.Actors[OursAllFeatures]);
-  vtkNew<vtkOpenGLPolyDataMapper> culledFloorMapper;
-  culledFloorMapper->SetInputData(mesh);
-  vtkNew<vtkActor> culledFloor; // the renderer keeps it
-  culledFloor->SetMapper(culledFloorMapper);
-  culledFloor->GetProperty()->DeepCopy(contest.Actors[Unlit]->GetProperty());
-  culledFloor->GetProperty()->BackfaceCullingOn();
-  contest.Scene.Renderer->AddActor(culledFloor);
-  contest.Race.Actors.push_back(culledFloor);
+  contest.Race.Actors.push_back(
+    AddCulledFloor(mesh, contest.Actors[Unlit]->GetProperty(), contest.Scene.Renderer));
 }
 
 // Every light kind at 1, 8 and 32 lights (and VTK's headlight) on the sphere and on each mesh
@@ -712,16 +721,8 @@ struct ShellContenders
         renderer->RemoveActor(actor);
       }
     }
-    // vtkPhong culls the back faces of the closed shells: its floor is the unlit draw that
-    // culls them too (VTK's own property setting).
-    vtkNew<vtkOpenGLPolyDataMapper> culledFloorMapper;
-    culledFloorMapper->SetInputData(mesh);
-    vtkNew<vtkActor> culledFloor;
-    culledFloor->SetMapper(culledFloorMapper);
-    culledFloor->GetProperty()->DeepCopy(stock[Unlit]->GetProperty());
-    culledFloor->GetProperty()->BackfaceCullingOn();
-    renderer->AddActor(culledFloor);
-    this->Actors.push_back(culledFloor);
+    // vtkPhong culls the back faces of the closed shells: its floor culls them too.
+    this->Actors.push_back(AddCulledFloor(mesh, stock[Unlit]->GetProperty(), renderer));
   }
   std::vector<vtkSmartPointer<vtkActor>> Actors;
   std::vector<vtkSmartPointer<vtkPhongPolyDataMapper>> Mappers;

@@ -10,7 +10,6 @@
 #include "vtkNew.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLIndexBufferObject.h"
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkPhongVisibleClusters.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"

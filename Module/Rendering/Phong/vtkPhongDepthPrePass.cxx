@@ -59,7 +59,7 @@ bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMa
   }
   if (used)
   {
-    this->DrawWithPrePass(ren, act, counting, draw);
+    this->DrawWithPrePass(ren, counting, draw);
     return true;
   }
   if (counting)
@@ -79,7 +79,7 @@ bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMa
 // colour; the lit draw, with the same vertex shader (so the same depths) and VTK's GL_LEQUAL
 // test, then shades only the nearest surface of each pixel.
 void vtkPhongDepthPrePass::DrawWithPrePass(
-  vtkRenderer* ren, vtkActor* act, bool counting, const std::function<void(bool depthOnly)>& draw)
+  vtkRenderer* ren, bool counting, const std::function<void(bool depthOnly)>& draw)
 {
   vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
   {

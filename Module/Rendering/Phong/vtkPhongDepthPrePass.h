@@ -113,8 +113,8 @@ public:
   static constexpr int ReprobeInterval = 64;
 
 private:
-  void DrawWithPrePass(vtkRenderer* ren, vtkActor* act, bool counting,
-    const std::function<void(bool depthOnly)>& draw);
+  void DrawWithPrePass(
+    vtkRenderer* ren, bool counting, const std::function<void(bool depthOnly)>& draw);
   void CollectCounts();
   void Reset();
 

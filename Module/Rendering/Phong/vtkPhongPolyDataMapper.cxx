@@ -2,7 +2,6 @@
 
 #include "vtkActor.h"
 #include "vtkCellData.h"
-#include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
