@@ -8,8 +8,9 @@ ClosedSurfaceCulling off and on.
   nearer than every front face (by more than 1e-4 of the depth range, in the depth pictures
   of the front faces alone and the back faces alone that stock VTK's mapper draws of the same
   mesh from the same view), inside the front faces' outline, but for at most 2 pixels per
-  view (rounding along interior silhouettes): culling hides no back face that can be seen. The other pixels that differ are ties by rounding (on the outline, which of a
-  silhouette edge's two faces covers a pixel; coincident faces); the table lists them.
+  view (rounding along interior silhouettes): culling hides no back face that can be seen.
+  The other pixels that differ are ties by rounding (on the outline, which of a silhouette
+  edge's two faces covers a pixel; coincident faces); the table lists them.
 - Most closed meshes are culled (at least 60).
 
     PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Core xvfb-run -a /usr/bin/python3 \\
