@@ -16,7 +16,9 @@ directional, a point and a spot light. Checks, each failing with "ERROR:":
 3. with N ranks, N rank colours are on screen (every rank's piece reached the image);
 4. in the ShadingNormal debug view every visible pixel of every rank's piece is a unit
    normal encoded as (N + 1) / 2: only vtkPhong's shader draws that, so each rank's piece
-   was lit by it.
+   was lit by it;
+5. the back faces of the sphere are culled serially (closed) and not under MPI (each
+   rank's piece is open), and culling off draws the same picture.
 """
 
 import argparse
@@ -74,6 +76,26 @@ def add_lights(view):
     spot.Position = [0.4, 1.5, 1.5]
     spot.FocalPoint = [0.15, 0.1, 0.3]
     spot.Intensity = 0.6
+
+
+def check_back_face_culling(display, view, ranks, culled_picture, out):
+    """5: serially the sphere is closed and its hidden back faces are culled; split between
+    ranks each piece is open and drawn whole. Culling off draws the same picture."""
+    display.UpdatePropertyInformation()
+    used = display.GetPropertyValue("UsedClosedSurfaceCulling")
+    print("back faces culled: %s" % used)
+    if used != (1 if ranks == 1 else 0):
+        fail("back-face culling %s with %d rank(s)" % ("used" if used else "not used", ranks))
+    display.CullHiddenBackFaces = 0
+    Render(view)
+    path = os.path.join(out, "PhongParaView-%dranks-unculled.png" % ranks)
+    SaveScreenshot(path, view, ImageResolution=list(SIZE))
+    _, _, _, unculled = read_png(path)
+    differing = sum(1 for a, b in zip(unculled, culled_picture) if a != b)
+    print("culling off: %d pixels differ" % differing)
+    if len(unculled) != len(culled_picture) or differing > 4:
+        fail("culling the back faces changed %d pixels" % differing)
+    display.CullHiddenBackFaces = 1
 
 
 def main():
@@ -137,6 +159,7 @@ def main():
               % (differing, len(picture)))
         if differing > 40:
             fail("%d pixels differ from the serial baseline %s" % (differing, args.baseline))
+    check_back_face_culling(display, view, ranks, picture, args.out)
 
     # 3: each rank's piece in its own colour (red rank 0, blue rank 1, ...).
     display.ColorArrayName = ["POINTS", "ProcessId"]

@@ -27,12 +27,15 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
+#include "vtkOpenGLShaderProperty.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
-#include "vtkPhongCompositePolyDataMapper.h"
+#include "vtkPhongClosedSurface.h"
 #include "vtkPhongCompatibility.h"
+#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongMapperCore.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSelection.h"
 #include "vtkShaderProperty.h"
 
 #include <map>
@@ -46,6 +49,11 @@ public:
   vtkTemplateTypeMacro(vtkPhongBlockMapper, BlockMapper);
 
   vtkPhongMapperCore* GetCore() { return this->Core; }
+
+  /**
+   * Whether the last draw culled the back faces of closed surfaces (RenderPieceDraw).
+   */
+  bool GetUsedClosedSurfaceCulling() const { return this->UsedClosedSurfaceCulling; }
 
   void ReleaseGraphicsResources(vtkWindow* window) override
   {
@@ -161,9 +169,8 @@ protected:
     this->Superclass::AppendOneBufferObject(ren, act, element, offset, colors, norms);
   }
 #else
-  void AppendOneBufferObject(vtkRenderer* ren, vtkActor* act,
-    vtkCompositeMapperHelperData* element, vtkIdType& offset, std::vector<unsigned char>& colors,
-    std::vector<float>& norms) override
+  void AppendOneBufferObject(vtkRenderer* ren, vtkActor* act, vtkCompositeMapperHelperData* element,
+    vtkIdType& offset, std::vector<unsigned char>& colors, std::vector<float>& norms) override
   {
     ValidBlockScope scope(element->Data, this->ValidBlock(element->Data));
     this->Superclass::AppendOneBufferObject(ren, act, element, offset, colors, norms);
@@ -193,6 +200,92 @@ protected:
     vtkPolyData* Original;
   };
 
+  // Culls the back faces of closed surfaces as vtkPhongPolyDataMapper does
+  // (vtkPhongClosedSurface), over all the blocks in the vertex buffer: only when every one of
+  // them is drawn in this pass, visible and opaque, since a block left out could open a
+  // surface the others close.
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override
+  {
+    const unsigned int hiddenFaces = this->HiddenFaces(ren, act);
+    this->UsedClosedSurfaceCulling = hiddenFaces != 0;
+    vtkPhongClosedSurface::ScopedCulling culling(ren, hiddenFaces);
+    this->Superclass::RenderPieceDraw(ren, act);
+  }
+
+  unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act)
+  {
+    auto* parent = vtkPhongCompositePolyDataMapper::SafeDownCast(this->Parent);
+    if (!parent || !parent->GetClosedSurfaceCulling())
+    {
+      return 0;
+    }
+#if VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS
+    vtkShaderProperty* legacyShaders = this->LegacyShaderProperty;
+#else
+    vtkShaderProperty* legacyShaders = nullptr;
+#endif
+    const int clippingPlanes =
+      this->GetNumberOfClippingPlanes() + parent->GetNumberOfClippingPlanes();
+    vtkSelection* selection = parent->GetSelection();
+    std::vector<vtkPhongClosedSurface::Block> blocks;
+    if (!vtkPhongClosedSurface::DrawsOnlySurfaces(
+          ren, act, this->Primitives, legacyShaders, clippingPlanes) ||
+      (selection && selection->GetNumberOfNodes() > 0) || !this->EveryBlockDrawn(blocks))
+    {
+      return 0;
+    }
+    this->ClosedSurface.Update(
+      this->Primitives[BlockMapper::PrimitiveTris].IBO, blocks, this->VBOBuildTime.GetMTime());
+    return this->ClosedSurface.HiddenFaces(ren, act, parent->GetBounds());
+  }
+
+  // Whether every block in the vertex buffer is visible and opaque, with the points each
+  // uploaded (its valid copy's, from its first vertex on).
+  bool EveryBlockDrawn(std::vector<vtkPhongClosedSurface::Block>& blocks)
+  {
+    for (const BlockInBuffer& block : this->BlocksInBuffer())
+    {
+      vtkPolyData* uploaded = this->ValidBlock(block.Data);
+      if (!block.VisibleAndOpaque || !uploaded ||
+        block.NextVertex - block.StartVertex != uploaded->GetNumberOfPoints())
+      {
+        return false;
+      }
+      blocks.push_back({ uploaded, static_cast<vtkIdType>(block.StartVertex) });
+    }
+    return !blocks.empty();
+  }
+
+  struct BlockInBuffer
+  {
+    vtkPolyData* Data;
+    bool VisibleAndOpaque;
+    vtkIdType StartVertex;
+    vtkIdType NextVertex;
+  };
+
+  std::vector<BlockInBuffer> BlocksInBuffer() const
+  {
+    std::vector<BlockInBuffer> blocks;
+#if VTKPHONG_VTK_9_3
+    for (const auto& entry : this->VTKPolyDataToGLBatchElement)
+    {
+      const auto& element = *entry.second;
+      blocks.push_back(
+        { element.Parent.PolyData, element.Parent.Visibility && element.Parent.IsOpaque,
+          element.StartVertex, element.NextVertex });
+    }
+#else
+    for (const auto& entry : this->Data)
+    {
+      const vtkCompositeMapperHelperData& element = *entry.second;
+      blocks.push_back({ element.Data, element.Visibility && element.IsOpaque, element.StartVertex,
+        element.NextVertex });
+    }
+#endif
+    return blocks;
+  }
+
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override
   {
     this->Superclass::RenderPieceFinish(ren, act);
@@ -200,9 +293,14 @@ protected:
   }
 
   // Errors name the mapper the user made, not the block mapper.
-  vtkObject* Reporter() { return this->Parent ? static_cast<vtkObject*>(this->Parent) : this; }
+  vtkObject* Reporter()
+  {
+    return this->Parent ? static_cast<vtkObject*>(this->Parent) : this;
+  }
 
   vtkNew<vtkPhongMapperCore> Core;
+  vtkPhongClosedSurface ClosedSurface;
+  bool UsedClosedSurfaceCulling = false;
 
 private:
   vtkPhongBlockMapper(const vtkPhongBlockMapper&) = delete;

@@ -4,24 +4,35 @@
 #include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLCamera.h"
+#include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderPass.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkPhongVisibleClusters.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkShaderProperty.h"
+#include "vtkTexture.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
+#include <utility>
 
 namespace
 {
@@ -71,6 +82,13 @@ void vtkPhongClosedSurface::RadixSort(std::vector<std::uint64_t>& keys, int bits
 void vtkPhongClosedSurface::Update(
   vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input, vtkMTimeType builtAt)
 {
+  this->Update(triangles, std::vector<Block>{ { input, 0 } }, builtAt);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongClosedSurface::Update(
+  vtkOpenGLIndexBufferObject* triangles, const std::vector<Block>& blocks, vtkMTimeType builtAt)
+{
   if (builtAt == this->BuiltAt && triangles->IndexCount == this->IndexCount)
   {
     return;
@@ -78,14 +96,81 @@ void vtkPhongClosedSurface::Update(
   this->BuiltAt = builtAt;
   this->IndexCount = triangles->IndexCount;
   this->Orientation = 0;
-  std::vector<unsigned int> indices;
-  if (!input || !input->GetPoints() || HasConcavePolygons(input) ||
-    !vtkPhongVisibleClusters::ReadIndices(triangles, indices) ||
-    !WeldTriangles(indices, WeldPoints(input)) || !IsClosedAndConsistent(indices))
+  for (const Block& block : blocks)
   {
-    return;
+    if (!block.Data || !block.Data->GetPoints() || HasConcavePolygons(block.Data))
+    {
+      return;
+    }
   }
-  this->Orientation = Orient(indices, input);
+  vtkSmartPointer<vtkPolyData> points = blocks.size() == 1 && blocks[0].FirstPoint == 0
+    ? vtkSmartPointer<vtkPolyData>(blocks[0].Data)
+    : PointsOfBlocks(blocks);
+  std::vector<unsigned int> indices;
+  if (points && vtkPhongVisibleClusters::ReadIndices(triangles, indices))
+  {
+    this->Analyse(indices, points);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongClosedSurface::Analyse(std::vector<unsigned int>& indices, vtkPolyData* input)
+{
+  if (WeldTriangles(indices, WeldPoints(input)) && IsClosedAndConsistent(indices))
+  {
+    this->Orientation = Orient(indices, input);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The points of the vertex buffer the blocks share, in its order; nullptr when two blocks
+// claim the same vertices with points of their own (blocks with the same points array share
+// its vertices: VTK uploads it once). Vertices no block claims stay NaN, which rules culling
+// out if a triangle uses one.
+vtkSmartPointer<vtkPolyData> vtkPhongClosedSurface::PointsOfBlocks(const std::vector<Block>& blocks)
+{
+  struct Range
+  {
+    vtkIdType First, Last; // [First, Last)
+    vtkDataArray* Source;
+    bool operator<(const Range& other) const { return this->First < other.First; }
+  };
+  std::vector<Range> ranges;
+  vtkIdType count = 0;
+  for (const Block& block : blocks)
+  {
+    const vtkIdType last = block.FirstPoint + block.Data->GetNumberOfPoints();
+    if (last > block.FirstPoint)
+    {
+      ranges.push_back({ block.FirstPoint, last, block.Data->GetPoints()->GetData() });
+      count = std::max(count, last);
+    }
+  }
+  std::sort(ranges.begin(), ranges.end());
+  for (size_t k = 1; k < ranges.size(); ++k)
+  {
+    const Range& previous = ranges[k - 1];
+    const bool shared = ranges[k].First == previous.First && ranges[k].Source == previous.Source;
+    if (ranges[k].First < previous.Last && !shared)
+    {
+      return nullptr;
+    }
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(count);
+  points->GetData()->Fill(std::numeric_limits<double>::quiet_NaN());
+  for (const Block& block : blocks)
+  {
+    vtkDataArray* source = block.Data->GetPoints()->GetData();
+    for (vtkIdType p = 0; p < source->GetNumberOfTuples(); ++p)
+    {
+      points->SetPoint(block.FirstPoint + p, source->GetTuple3(p));
+    }
+  }
+  auto merged = vtkSmartPointer<vtkPolyData>::New();
+  merged->SetPoints(points);
+  return merged;
 }
 
 //------------------------------------------------------------------------------
@@ -396,4 +481,64 @@ unsigned int vtkPhongClosedSurface::HiddenFaces(
     return 0;
   }
   return (this->Orientation > 0) == (determinant < 0.0) ? GL_BACK : GL_FRONT;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongClosedSurface::DrawsOnlySurfaces(vtkRenderer* ren, vtkActor* act,
+  const vtkOpenGLHelper* primitives, vtkShaderProperty* legacyShaders, int clippingPlanes)
+{
+  vtkProperty* property = act->GetProperty();
+  vtkInformation* keys = act->GetPropertyKeys();
+  const bool plainOpaqueSurface = property->GetRepresentation() == VTK_SURFACE &&
+    property->GetOpacity() >= 1.0 && !property->GetBackfaceCulling() &&
+    !property->GetFrontfaceCulling() && !property->GetEdgeVisibility() &&
+    !property->GetVertexVisibility() && property->GetNumberOfTextures() == 0 &&
+    !act->GetTexture() && !act->GetForceOpaque() && !act->IsRenderingTranslucentPolygonalGeometry();
+  using Mapper = vtkOpenGLPolyDataMapper;
+  const bool linesOfTriangles = primitives[Mapper::PrimitiveLines].IBO->IndexCount > 0 &&
+    (property->GetLineWidth() > 1.0 || property->GetRenderLinesAsTubes());
+  const bool pointsOfTriangles = primitives[Mapper::PrimitivePoints].IBO->IndexCount > 0 &&
+    (property->GetPointSize() > 1.0 || property->GetRenderPointsAsSpheres());
+  const bool onlyTriangles = primitives[Mapper::PrimitiveTris].IBO->IndexCount > 0 &&
+    primitives[Mapper::PrimitiveTriStrips].IBO->IndexCount == 0 && !linesOfTriangles &&
+    !pointsOfTriangles;
+  return plainOpaqueSurface && onlyTriangles && !HasShaderCode(act, legacyShaders) &&
+    clippingPlanes == 0 && !ren->GetSelector() &&
+    !(keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()));
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongClosedSurface::HasShaderCode(vtkActor* act, vtkShaderProperty* legacyShaders)
+{
+  vtkShaderProperty* shaders = act->GetShaderProperty();
+  const bool actorCode = shaders &&
+    (shaders->GetNumberOfShaderReplacements() > 0 || shaders->HasVertexShaderCode() ||
+      shaders->HasFragmentShaderCode() || shaders->HasGeometryShaderCode());
+  return actorCode || (legacyShaders && legacyShaders->GetNumberOfShaderReplacements() > 0);
+}
+
+//------------------------------------------------------------------------------
+vtkPhongClosedSurface::ScopedCulling::ScopedCulling(vtkRenderer* ren, unsigned int faces)
+{
+  if (faces == 0)
+  {
+    return;
+  }
+  this->State = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  this->WasEnabled = this->State->GetEnumState(GL_CULL_FACE);
+  GLint mode = GL_BACK;
+  this->State->vtkglGetIntegerv(GL_CULL_FACE_MODE, &mode);
+  this->Mode = mode;
+  this->State->vtkglCullFace(faces);
+  this->State->vtkglEnable(GL_CULL_FACE);
+}
+
+//------------------------------------------------------------------------------
+vtkPhongClosedSurface::ScopedCulling::~ScopedCulling()
+{
+  if (this->State)
+  {
+    this->State->SetEnumState(GL_CULL_FACE, this->WasEnabled);
+    this->State->vtkglCullFace(static_cast<GLenum>(this->Mode));
+  }
 }

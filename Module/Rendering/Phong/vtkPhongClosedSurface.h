@@ -39,17 +39,21 @@
 #ifndef vtkPhongClosedSurface_h
 #define vtkPhongClosedSurface_h
 
-#include "vtkBoundingBox.h" // for vtkBoundingBox
-#include "vtkType.h"        // for vtkMTimeType
+#include "vtkBoundingBox.h"  // for vtkBoundingBox
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+#include "vtkType.h"         // for vtkMTimeType
 
 #include <cstddef> // for size_t
 #include <cstdint> // for std::uint64_t
 #include <vector>  // for std::vector
 
 class vtkActor;
+class vtkOpenGLHelper;
 class vtkOpenGLIndexBufferObject;
+class vtkOpenGLState;
 class vtkPolyData;
 class vtkRenderer;
+class vtkShaderProperty;
 
 class vtkPhongClosedSurface
 {
@@ -60,6 +64,22 @@ public:
    * the window's context current.
    */
   void Update(vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input, vtkMTimeType builtAt);
+
+  /**
+   * A block of a vertex buffer that holds several (a composite mapper's): its polydata,
+   * whose points the buffer holds from FirstPoint on.
+   */
+  struct Block
+  {
+    vtkPolyData* Data = nullptr;
+    vtkIdType FirstPoint = 0;
+  };
+
+  /**
+   * The same for the blocks one index buffer draws from one vertex buffer.
+   */
+  void Update(
+    vtkOpenGLIndexBufferObject* triangles, const std::vector<Block>& blocks, vtkMTimeType builtAt);
 
   /**
    * +1: closed surfaces, each enclosing its volume with outward faces; -1: all inward;
@@ -73,8 +93,42 @@ public:
    */
   unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act, const double bounds[6]) const;
 
+  /**
+   * Whether a mapper draws, besides triangles that may form closed surfaces, nothing through
+   * which a back face could show: a plain opaque surface (no translucency, texture, edges,
+   * vertices or face culling of the property's own), no strips (VTK's strip order is not
+   * checked), no wide lines, tubes or sphere points (a geometry shader makes them triangles of
+   * any winding), no shader code of the user's (it may move or discard fragments; before VTK
+   * 9.2 also `legacyShaders`, the mapper's own replacements), no clipping plane (its cut
+   * opens the solid), no picking and no render pass. `primitives`: the mapper's
+   * vtkOpenGLPolyDataMapper::Primitives.
+   */
+  static bool DrawsOnlySurfaces(vtkRenderer* ren, vtkActor* act, const vtkOpenGLHelper* primitives,
+    vtkShaderProperty* legacyShaders, int clippingPlanes);
+
+  /**
+   * Culls `faces` (GL_BACK or GL_FRONT; 0: nothing) for as long as it lives, then restores the
+   * window's culling state.
+   */
+  class ScopedCulling
+  {
+  public:
+    ScopedCulling(vtkRenderer* ren, unsigned int faces);
+    ~ScopedCulling();
+    ScopedCulling(const ScopedCulling&) = delete;
+    void operator=(const ScopedCulling&) = delete;
+
+  private:
+    vtkOpenGLState* State = nullptr;
+    bool WasEnabled = false;
+    int Mode = 0;
+  };
+
 private:
+  void Analyse(std::vector<unsigned int>& indices, vtkPolyData* input);
+  static vtkSmartPointer<vtkPolyData> PointsOfBlocks(const std::vector<Block>& blocks);
   static bool HasConcavePolygons(vtkPolyData* input);
+  static bool HasShaderCode(vtkActor* act, vtkShaderProperty* legacyShaders);
   static std::vector<vtkIdType> WeldPoints(vtkPolyData* input);
   static bool WeldTriangles(
     std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded);

@@ -14,7 +14,10 @@
 #include "vtkWeakPointer.h"
 
 #if VTKPHONG_VTK_9_3
+#include "vtkOpenGLBatchedPolyDataMapper.h"
+#include "vtkPhongBlockMapper.h"
 #include "vtkPhongCompositeDelegator.h"
+using vtkPhongHelper = vtkPhongBlockMapper<vtkOpenGLBatchedPolyDataMapper>;
 #else
 // VTK 9.1's vtkCompositeMapperHelper2.h uses these without including them.
 #include "vtkColor.h"
@@ -23,6 +26,7 @@
 
 #include "vtkCompositeMapperHelper2.h"
 #include "vtkPhongBlockMapper.h"
+using vtkPhongHelper = vtkPhongBlockMapper<vtkCompositeMapperHelper2>;
 #endif
 
 #include <algorithm>
@@ -91,7 +95,7 @@ vtkCompositePolyDataMapperDelegator* vtkPhongCompositePolyDataMapper::CreateADel
 //------------------------------------------------------------------------------
 vtkCompositeMapperHelper2* vtkPhongCompositePolyDataMapper::CreateHelper()
 {
-  auto* helper = vtkPhongBlockMapper<vtkCompositeMapperHelper2>::New();
+  auto* helper = vtkPhongHelper::New();
   this->Internal->Add(helper, helper->GetCore());
   return helper;
 }
@@ -179,6 +183,21 @@ int vtkPhongCompositePolyDataMapper::GetNumberOfShaderVariants()
 }
 
 //------------------------------------------------------------------------------
+bool vtkPhongCompositePolyDataMapper::GetUsedClosedSurfaceCulling()
+{
+  this->Internal->Prune();
+  for (const auto& helper : this->Internal->Helpers)
+  {
+    auto* blockMapper = static_cast<vtkPhongHelper*>(helper.first.GetPointer());
+    if (blockMapper->GetUsedClosedSurfaceCulling())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 const char* vtkPhongCompositePolyDataMapper::GetLastShaderSignature()
 {
   this->Internal->Prune();
@@ -201,6 +220,10 @@ void vtkPhongCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
+  os << indent << "ClosedSurfaceCulling: " << (this->ClosedSurfaceCulling ? "On" : "Off") << "\n";
+  os << indent
+     << "UsedClosedSurfaceCulling: " << (this->GetUsedClosedSurfaceCulling() ? "yes" : "no")
+     << "\n";
   os << indent << "NumberOfHelpers: " << this->GetNumberOfHelpers() << "\n";
   os << indent << "ShaderCompileCount: " << this->GetShaderCompileCount() << "\n";
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";

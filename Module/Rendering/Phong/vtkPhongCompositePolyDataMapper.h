@@ -15,6 +15,10 @@
  * vtkCompositeDataDisplayAttributes keep working (the lighting then reads VTK's per-block
  * colour variables instead of ready-made material products).
  *
+ * The back faces of closed surfaces seen from outside are culled as vtkPhongPolyDataMapper
+ * culls them (SetClosedSurfaceCulling), over each helper's blocks together, while all of
+ * them are visible and opaque.
+ *
  * The material is the actor's vtkProperty or vtkPhongProperty, exactly as for
  * vtkPhongPolyDataMapper. Unlike that mapper, this one does not compute missing normals
  * itself: like stock VTK's composite mapper it draws the normals the blocks carry. Put
@@ -91,6 +95,20 @@ public:
 
   ///@{
   /**
+   * Culling of hidden back faces, as vtkPhongPolyDataMapper::SetClosedSurfaceCulling, for
+   * each helper's blocks together (blocks with the same arrays share a helper): only while
+   * every block of the helper is visible and opaque, so that no block left out opens a
+   * surface the others close. Default on. UsedClosedSurfaceCulling: whether a helper culled
+   * in the last render.
+   */
+  vtkSetMacro(ClosedSurfaceCulling, bool);
+  vtkGetMacro(ClosedSurfaceCulling, bool);
+  vtkBooleanMacro(ClosedSurfaceCulling, bool);
+  bool GetUsedClosedSurfaceCulling();
+  ///@}
+
+  ///@{
+  /**
    * Shader statistics summed over the helpers (one helper per kind of block: with or
    * without scalars, normals, texture coordinates), as vtkPhongPolyDataMapper reports them
    * for itself; and the lighting signature of the last variant a helper built (empty when
@@ -141,6 +159,7 @@ protected:
   int DebugLightIndex = 0;
   bool ShaderSpecialization = true;
   double LightCullingBound = 0.5 / 255.0;
+  bool ClosedSurfaceCulling = true;
 
 private:
   vtkPhongCompositePolyDataMapper(const vtkPhongCompositePolyDataMapper&) = delete;

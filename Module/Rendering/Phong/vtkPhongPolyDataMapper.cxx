@@ -365,48 +365,24 @@ void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
   const unsigned int hiddenFaces = this->HiddenFaces(ren, act);
   this->UsedClosedSurfaceCulling = hiddenFaces != 0;
-  if (!hiddenFaces)
-  {
-    this->DrawSurfaces(ren, act);
-    return;
-  }
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
-  GLint cullFaceMode = GL_BACK;
-  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode);
-  {
-    vtkOpenGLState::ScopedglEnableDisable culling(state, GL_CULL_FACE);
-    state->vtkglCullFace(hiddenFaces);
-    state->vtkglEnable(GL_CULL_FACE);
-    this->DrawSurfaces(ren, act);
-  }
-  state->vtkglCullFace(static_cast<GLenum>(cullFaceMode));
+  vtkPhongClosedSurface::ScopedCulling culling(ren, hiddenFaces);
+  this->DrawSurfaces(ren, act);
 }
 
 //------------------------------------------------------------------------------
-// The faces to cull, or 0: the conditions under which a closed surface's back faces cannot
-// show (a face that a shader replacement moves or discards, a clipping plane's cut, a
-// texture's transparent texel, an edge drawn over a silhouette could show one) and nothing
-// else drawn is made of triangles, then the surfaces and the view (vtkPhongClosedSurface).
+// The faces to cull, or 0: nothing drawn may show a back face other than through the closed
+// surfaces (a shader replacement, a clipping plane's cut, a texture's transparent texel, an
+// edge over a silhouette could), then the surfaces and the view (vtkPhongClosedSurface).
 unsigned int vtkPhongPolyDataMapper::HiddenFaces(vtkRenderer* ren, vtkActor* act)
 {
-  vtkProperty* property = act->GetProperty();
-  vtkInformation* keys = act->GetPropertyKeys();
-  const bool plainOpaqueSurface = property->GetRepresentation() == VTK_SURFACE &&
-    property->GetOpacity() >= 1.0 && !property->GetBackfaceCulling() &&
-    !property->GetFrontfaceCulling() && !property->GetEdgeVisibility() &&
-    !property->GetVertexVisibility() && property->GetNumberOfTextures() == 0 &&
-    !act->GetTexture() && !act->GetForceOpaque() && !act->IsRenderingTranslucentPolygonalGeometry();
-  // Wide lines, tubes and spheres are triangles a geometry shader makes, of any winding.
-  const bool linesOfTriangles = this->Primitives[PrimitiveLines].IBO->IndexCount > 0 &&
-    (property->GetLineWidth() > 1.0 || property->GetRenderLinesAsTubes());
-  const bool pointsOfTriangles = this->Primitives[PrimitivePoints].IBO->IndexCount > 0 &&
-    (property->GetPointSize() > 1.0 || property->GetRenderPointsAsSpheres());
-  const bool onlyClosedTriangles = this->Primitives[PrimitiveTris].IBO->IndexCount > 0 &&
-    this->Primitives[PrimitiveTriStrips].IBO->IndexCount == 0 && !linesOfTriangles &&
-    !pointsOfTriangles;
-  if (!this->ClosedSurfaceCulling || !plainOpaqueSurface || !onlyClosedTriangles ||
-    this->HasShaderCodeOfUser(act) || this->GetNumberOfClippingPlanes() > 0 || ren->GetSelector() ||
-    (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())) || !this->CurrentInput)
+#if VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS
+  vtkShaderProperty* legacyShaders = this->LegacyShaderProperty;
+#else
+  vtkShaderProperty* legacyShaders = nullptr;
+#endif
+  if (!this->ClosedSurfaceCulling || !this->CurrentInput ||
+    !vtkPhongClosedSurface::DrawsOnlySurfaces(
+      ren, act, this->Primitives, legacyShaders, this->GetNumberOfClippingPlanes()))
   {
     return 0;
   }
@@ -414,26 +390,6 @@ unsigned int vtkPhongPolyDataMapper::HiddenFaces(vtkRenderer* ren, vtkActor* act
   surface.Update(
     this->Primitives[PrimitiveTris].IBO, this->CurrentInput, this->VBOBuildTime.GetMTime());
   return surface.HiddenFaces(ren, act, this->CurrentInput->GetBounds());
-}
-
-//------------------------------------------------------------------------------
-// Shader code of the user's: replacements or whole shaders on the actor's shader property, or
-// (before VTK 9.2) on the mapper itself.
-bool vtkPhongPolyDataMapper::HasShaderCodeOfUser(vtkActor* act)
-{
-  vtkShaderProperty* shaders = act->GetShaderProperty();
-  if (shaders &&
-    (shaders->GetNumberOfShaderReplacements() > 0 || shaders->HasVertexShaderCode() ||
-      shaders->HasFragmentShaderCode() || shaders->HasGeometryShaderCode()))
-  {
-    return true;
-  }
-#if VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS
-  return this->LegacyShaderProperty &&
-    this->LegacyShaderProperty->GetNumberOfShaderReplacements() > 0;
-#else
-  return false;
-#endif
 }
 
 //------------------------------------------------------------------------------

@@ -350,7 +350,6 @@ private:
   vtkPolyData* GetValidInput(vtkPolyData* input);
   void DrawSurfaces(vtkRenderer* ren, vtkActor* act);
   unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act);
-  bool HasShaderCodeOfUser(vtkActor* act);
   bool CanCullDepthPass(vtkRenderer* ren, vtkActor* act);
   void DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool culled);
 

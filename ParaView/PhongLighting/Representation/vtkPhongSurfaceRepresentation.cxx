@@ -194,6 +194,25 @@ void vtkPhongSurfaceRepresentation::SetDebugLightIndex(int index)
 }
 
 //------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetClosedSurfaceCulling(int cull)
+{
+  for (vtkMapper* mapper : { this->Mapper, this->LODMapper })
+  {
+    vtkPhongCompositePolyDataMapper::SafeDownCast(mapper)->SetClosedSurfaceCulling(cull != 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongSurfaceRepresentation::GetUsedClosedSurfaceCulling()
+{
+  // The full-resolution mapper's: the level-of-detail one keeps what it did when last used.
+  return vtkPhongCompositePolyDataMapper::SafeDownCast(this->Mapper)
+           ->GetUsedClosedSurfaceCulling()
+    ? 1
+    : 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetComputeNormals(int compute)
 {
   if (this->ComputeNormals != (compute != 0))

@@ -74,6 +74,15 @@ public:
   void SetDebugLightIndex(int index);
 
   /**
+   * Culling of the hidden back faces of closed surfaces seen from outside
+   * (vtkPhongCompositePolyDataMapper::SetClosedSurfaceCulling; default on, the picture is the
+   * same) and whether the last render culled them (1) or not (0): a piece of a surface split
+   * between ranks is not closed, and is drawn whole.
+   */
+  void SetClosedSurfaceCulling(int cull);
+  int GetUsedClosedSurfaceCulling();
+
+  /**
    * On (default): the surface's normals are computed by vtkOpenMeshNormals. Off: the normals
    * the surface carries are drawn (none: faceted, as ParaView's Surface representation).
    */

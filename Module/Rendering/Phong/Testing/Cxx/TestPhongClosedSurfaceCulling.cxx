@@ -11,13 +11,22 @@
 //   (the inside shows), an open sphere, CGAL's meshes with holes, a sphere beside a reversed
 //   one, a concave polygon, a clipping plane, translucency, edges, wireframe, strips, a wide
 //   line beside the sphere, a point at NaN, and culling switched off.
+// - The composite mapper's blocks: culled where each helper's blocks together are closed
+//   (two spheres, a sphere cut in two blocks, with a block colour, two helpers), not where a
+//   block is hidden or translucent (the cut opens the sphere) or open.
 
 #include "vtkPhongTestUtilities.h"
 
 #include "vtkAppendPolyData.h"
+#include "vtkCellArray.h"
+#include "vtkColor.h"
+#include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
+#include "vtkIdList.h"
 #include "vtkLineSource.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongOFFReader.h"
 #include "vtkPlane.h"
 #include "vtkRTAnalyticSource.h"
@@ -29,8 +38,10 @@
 
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace
 {
@@ -40,9 +51,41 @@ struct CullingScene
 {
   vtkPhongTest::Scene View{ 240, 240 };
   vtkActor* Actor = nullptr;
-  vtkPhongPolyDataMapper* Mapper = nullptr;
+  vtkPhongPolyDataMapper* Mapper = nullptr;             // a polydata's
+  vtkPhongCompositePolyDataMapper* Composite = nullptr; // or a composite dataset's
 
   explicit CullingScene(vtkPolyData* mesh)
+  {
+    this->Actor = vtkPhongTest::AddActor(this->View, mesh, Material());
+    this->Mapper = vtkPhongPolyDataMapper::SafeDownCast(this->Actor->GetMapper());
+    this->Light();
+  }
+
+  explicit CullingScene(vtkMultiBlockDataSet* blocks)
+  {
+    vtkNew<vtkPhongCompositePolyDataMapper> composite;
+    composite->SetInputDataObject(blocks);
+    vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+    composite->SetCompositeDataDisplayAttributes(attributes);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(composite);
+    actor->SetProperty(Material());
+    this->View.Renderer->AddActor(actor);
+    this->Actor = actor;
+    this->Composite = composite;
+    this->Light();
+  }
+
+  static vtkSmartPointer<vtkPhongProperty> Material()
+  {
+    auto material = vtkSmartPointer<vtkPhongProperty>::New();
+    material->SetSpecular(0.5);
+    material->SetShininess(30.0);
+    material->SetAmbient(0.1);
+    return material;
+  }
+
+  void Light()
   {
     this->View.Renderer->AutomaticLightCreationOff();
     const double origin[3] = { 0.0, 0.0, 0.0 };
@@ -52,18 +95,30 @@ struct CullingScene
     const double blue[3] = { 0.4, 0.5, 1.0 };
     vtkPhongTest::AddLight(this->View, key, origin, white, false);
     vtkPhongTest::AddLight(this->View, fill, origin, blue, false);
-    vtkNew<vtkPhongProperty> material;
-    material->SetSpecular(0.5);
-    material->SetShininess(30.0);
-    material->SetAmbient(0.1);
-    this->Actor = vtkPhongTest::AddActor(this->View, mesh, material);
-    this->Mapper = vtkPhongPolyDataMapper::SafeDownCast(this->Actor->GetMapper());
     this->View.Renderer->ResetCamera();
+  }
+
+  void SetCulling(bool culling)
+  {
+    if (this->Mapper)
+    {
+      this->Mapper->SetClosedSurfaceCulling(culling);
+    }
+    else
+    {
+      this->Composite->SetClosedSurfaceCulling(culling);
+    }
+  }
+
+  bool UsedCulling()
+  {
+    return this->Mapper ? this->Mapper->GetUsedClosedSurfaceCulling()
+                        : this->Composite->GetUsedClosedSurfaceCulling();
   }
 
   vtkSmartPointer<vtkImageData> Render(bool culling)
   {
-    this->Mapper->SetClosedSurfaceCulling(culling);
+    this->SetCulling(culling);
     this->View.Window->Render();
     return vtkPhongTest::Snapshot(this->View.Window);
   }
@@ -85,12 +140,13 @@ struct CullingScene
       }
       const auto off = this->Render(false);
       const auto on = this->Render(true);
-      usedViews += this->Mapper->GetUsedClosedSurfaceCulling() ? 1 : 0;
+      usedViews += this->UsedCulling() ? 1 : 0;
       differing += vtkPhongTest::CountDifferentPixels(off, on, 0);
       blankViews += vtkPhongTest::MaxDifference(off, Blank(off)) == 0 ? 1 : 0;
       camera->Azimuth(360.0 / views + 7.0);
       camera->Elevation(29.0);
       camera->OrthogonalizeViewUp();
+      this->View.Renderer->ResetCameraClippingRange();
     }
     const bool usedAsExpected = usedViews == (expectUsed ? views : 0);
     checks.Expect(differing <= zFightingPixels * views && blankViews == 0 && usedAsExpected,
@@ -288,6 +344,89 @@ void CheckSettingsThatShowBackFaces(Checks& checks)
   }
 }
 
+// The two halves of a sphere (the cells with their centre at x < 0, the others), each a
+// polydata with all the sphere's points: closed only together.
+std::pair<vtkSmartPointer<vtkPolyData>, vtkSmartPointer<vtkPolyData>> Halves(vtkPolyData* mesh)
+{
+  vtkNew<vtkCellArray> cells[2];
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType cell = 0; cell < mesh->GetNumberOfPolys(); ++cell)
+  {
+    mesh->GetCellPoints(cell, ids);
+    double centre = 0.0;
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      centre += mesh->GetPoint(ids->GetId(k))[0];
+    }
+    cells[centre < 0.0 ? 0 : 1]->InsertNextCell(ids);
+  }
+  vtkSmartPointer<vtkPolyData> halves[2];
+  for (int h = 0; h < 2; ++h)
+  {
+    halves[h] = vtkSmartPointer<vtkPolyData>::New();
+    halves[h]->SetPoints(mesh->GetPoints());
+    halves[h]->GetPointData()->ShallowCopy(mesh->GetPointData());
+    halves[h]->SetPolys(cells[h]);
+  }
+  return { halves[0], halves[1] };
+}
+
+vtkSmartPointer<vtkMultiBlockDataSet> Blocks(std::initializer_list<vtkPolyData*> meshes)
+{
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  for (vtkPolyData* mesh : meshes)
+  {
+    blocks->SetBlock(blocks->GetNumberOfBlocks(), mesh);
+  }
+  return blocks;
+}
+
+// vtkPhongCompositePolyDataMapper: its helpers (one per kind of block; the blocks of a helper
+// share one vertex buffer) cull over all their blocks, only while every one of them is drawn
+// opaque. A sphere cut in two blocks is closed; with one half hidden or translucent the
+// inside shows through the cut.
+void CheckCompositeBlocks(Checks& checks)
+{
+  auto sphere = vtkPhongTest::MakeSphere(48);
+  auto moved = Moved(sphere, 1.3);
+  // Seen side by side, the two spheres' silhouettes graze the view at the window's edges,
+  // where a back face wins a pixel's depth test by rounding now and then.
+  CullingScene(Blocks({ sphere, moved }))
+    .Compare("blocks: two spheres", true, checks, 4, nullptr, 1);
+  auto halves = Halves(sphere);
+  CullingScene(Blocks({ halves.first, halves.second }))
+    .Compare("blocks: the halves of a sphere", true, checks);
+  {
+    CullingScene coloured(Blocks({ halves.first, halves.second }));
+    coloured.Composite->GetCompositeDataDisplayAttributes()->SetBlockColor(
+      halves.first, vtkColor3d(0.9, 0.3, 0.2).GetData());
+    coloured.Compare("blocks: halves, one coloured", true, checks);
+  }
+  auto bare = vtkSmartPointer<vtkPolyData>::New(); // no normals: a helper of its own
+  bare->ShallowCopy(moved);
+  bare->GetPointData()->SetNormals(nullptr);
+  CullingScene(Blocks({ sphere, bare }))
+    .Compare("blocks: two helpers", true, checks, 4, nullptr, 1);
+  {
+    CullingScene hidden(Blocks({ halves.first, halves.second }));
+    hidden.Composite->GetCompositeDataDisplayAttributes()->SetBlockVisibility(halves.second, false);
+    hidden.Compare("blocks: halves, one hidden", false, checks);
+  }
+  {
+    CullingScene translucent(Blocks({ halves.first, halves.second }));
+    translucent.Composite->GetCompositeDataDisplayAttributes()->SetBlockOpacity(halves.second, 0.5);
+    translucent.Compare("blocks: halves, one translucent", false, checks);
+  }
+  CullingScene(Blocks({ sphere, OpenSphere() }))
+    .Compare("blocks: a sphere and an open one", false, checks);
+  {
+    CullingScene off(Blocks({ sphere, moved }));
+    off.Composite->SetClosedSurfaceCulling(false);
+    off.View.Window->Render();
+    checks.Expect(!off.Composite->GetUsedClosedSurfaceCulling(), "blocks: culling off: not used");
+  }
+}
+
 // Files nobody here wrote, without normals (the mapper computes and splits them at sharp
 // edges): closed meshes are culled; meshes with holes are not, nor a closed one with a
 // concave polygon (corner_poly: VTK fans it into overlapping triangles, turned over). Their folds
@@ -327,6 +466,7 @@ int TestPhongClosedSurfaceCulling(int argc, char* argv[])
   CheckViewsFromInside(checks);
   CheckOtherSurfaces(checks);
   CheckSettingsThatShowBackFaces(checks);
+  CheckCompositeBlocks(checks);
   CheckCGALMeshes(argv[1], checks);
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
 }
