@@ -12,6 +12,11 @@ ClosedSurfaceCulling off and on.
   The other pixels that differ are ties by rounding (on the outline, which of a silhouette
   edge's two faces covers a pixel; coincident faces); the table lists them.
 - Most closed meshes are culled (at least 60).
+- The composite mapper, drawing each mesh as ParaView's Phong Surface does (normals from
+  vtkOpenMeshNormals upstream, which orients the faces as the polydata mapper's own normals
+  do) in two blocks (the first and the second half of the cells, sharing the points), culls
+  in exactly the views where the polydata mapper culls (the analysis welds across blocks),
+  under the same rules for the pixels that differ.
 
     PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Core xvfb-run -a /usr/bin/python3 \\
         TestPhongClosedSurfaceCorpus.py --meshes <build>/data/corpus
@@ -24,8 +29,9 @@ import os
 import numpy
 import vtkphong
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkFloatArray
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkMultiBlockDataSet, vtkPolyData
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
 from vtkphong_testing import Checks, snapshot
 
@@ -48,6 +54,26 @@ def options():
     return parser.parse_args()
 
 
+def halves(mesh):
+    """The mesh as two blocks, the first and the second half of its polygons, sharing its
+    points: closed (where the mesh is) only together."""
+    polys = mesh.GetPolys()
+    offsets = vtk_to_numpy(polys.GetOffsetsArray()).astype(numpy.int64)
+    connectivity = vtk_to_numpy(polys.GetConnectivityArray()).astype(numpy.int64)
+    half = len(offsets) // 2
+    blocks = vtkMultiBlockDataSet()
+    for index, (first, last) in enumerate(((0, half), (half, len(offsets) - 1))):
+        cells = vtkCellArray()
+        cells.SetData(numpy_to_vtk(offsets[first:last + 1] - offsets[first], deep=1),
+                      numpy_to_vtk(connectivity[offsets[first]:offsets[last]], deep=1))
+        block = vtkPolyData()
+        block.SetPoints(mesh.GetPoints())
+        block.GetPointData().ShallowCopy(mesh.GetPointData())
+        block.SetPolys(cells)
+        blocks.SetBlock(index, block)
+    return blocks
+
+
 class View:
     def __init__(self, window, mesh):
         self.window = window
@@ -58,17 +84,28 @@ class View:
         self.mapper.SetInputData(mesh)
         self.stock = vtkPolyDataMapper()
         self.stock.SetInputData(mesh)
+        normals = vtkphong.vtkOpenMeshNormals()
+        normals.SetInputData(mesh)
+        normals.Update()
+        self.composite = vtkphong.vtkPhongCompositePolyDataMapper()
+        self.composite.SetInputDataObject(halves(normals.GetOutput()))
         self.actor = vtkActor()
         self.actor.SetMapper(self.mapper)
         self.actor.GetProperty().SetSpecular(0.4)
         self.renderer.AddActor(self.actor)
         self.renderer.ResetCamera()
 
-    def picture(self, culling):
-        self.mapper.SetClosedSurfaceCulling(culling)
-        self.window.Render()
-        pixels, _ = snapshot(self.window)
-        return pixels.reshape(-1, pixels.shape[-1]).astype(int)
+    def pictures(self, mapper):
+        """The pictures with culling off and on, and whether the second culled."""
+        self.actor.SetMapper(mapper)
+        result = []
+        for culling in (False, True):
+            mapper.SetClosedSurfaceCulling(culling)
+            self.window.Render()
+            pixels, _ = snapshot(self.window)
+            result.append(pixels.reshape(-1, pixels.shape[-1]).astype(int))
+        self.actor.SetMapper(self.mapper)
+        return result[0], result[1], mapper.GetUsedClosedSurfaceCulling()
 
     def depth(self, faces):
         """The depth picture of the front or the back faces alone, as stock VTK's mapper draws
@@ -113,23 +150,30 @@ def check_mesh(window, path):
     mesh = reader.GetOutput()
     if not 0 < mesh.GetNumberOfPolys() <= LARGEST:
         return None
+    name = os.path.basename(path)
     view = View(window, mesh)
     culled = differing = lost = worst = 0
     for _ in range(VIEWS):
-        off = view.picture(False)
-        on = view.picture(True)
-        used = view.mapper.GetUsedClosedSurfaceCulling()
-        changed = numpy.abs(off - on).max(axis=1) > 0
-        culled += 1 if used else 0
-        differing += int(changed.sum())
-        if used and changed.any():
-            front, back = view.depth("front"), view.depth("back")
-            lost_here = int((changed & inside(front) & (back < front - TIE)).sum())
-            lost += lost_here
-            worst = max(worst, lost_here)
-        elif not used:
-            checks.expect(not changed.any(), "%s: not culled, yet %d pixels differ"
-                          % (os.path.basename(path), int(changed.sum())))
+        depths = {}
+        used = None
+        for mapper, what in ((view.mapper, name), (view.composite, name + " in two blocks")):
+            off, on, used_here = view.pictures(mapper)
+            changed = numpy.abs(off - on).max(axis=1) > 0
+            if used is None:
+                used = used_here
+                culled += 1 if used else 0
+                differing += int(changed.sum())
+            checks.expect(used_here == used, "%s: culled by one mapper only" % what)
+            if used_here and changed.any():
+                if not depths:
+                    depths = {"front": view.depth("front"), "back": view.depth("back")}
+                front, back = depths["front"], depths["back"]
+                lost_here = int((changed & inside(front) & (back < front - TIE)).sum())
+                lost += lost_here
+                worst = max(worst, lost_here)
+            elif not used_here:
+                checks.expect(not changed.any(), "%s: not culled, yet %d pixels differ"
+                              % (what, int(changed.sum())))
         view.turn()
     return culled, differing, lost, worst
 
