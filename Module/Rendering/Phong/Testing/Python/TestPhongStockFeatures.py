@@ -30,8 +30,8 @@ from vtkmodules.vtkFiltersGeneral import vtkVertexGlyphFilter
 from vtkmodules.vtkFiltersSources import (vtkConeSource, vtkCubeSource, vtkLineSource, vtkParametricFunctionSource,
                                           vtkPlaneSource,
                                           vtkRegularPolygonSource, vtkSphereSource)
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkGlyph3DMapper, vtkHardwareSelector,
-                                         vtkLightKit,
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkCompositeDataDisplayAttributes,
+                                         vtkGlyph3DMapper, vtkHardwareSelector, vtkLightKit,
                                          vtkMapper, vtkPolyDataMapper, vtkRenderWindow,
                                          vtkRenderer)
 from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkLightingMapPass,
@@ -198,6 +198,36 @@ def edges_composite(scene):
     prop = shiny(composite_actor(scene))
     prop.EdgeVisibilityOn()
     prop.SetEdgeColor(0.1, 0.9, 0.3)
+    two_lights(scene.renderer)
+    finish(scene)
+
+
+def block_attributes(actor):
+    """The composite mapper's per-block attributes (ParaView's block colours, visibilities)
+    and its blocks."""
+    mapper = actor.GetMapper()
+    attributes = vtkCompositeDataDisplayAttributes()
+    mapper.SetCompositeDataDisplayAttributes(attributes)
+    blocks = mapper.GetInputDataObject(0, 0)
+    return attributes, [blocks.GetBlock(i) for i in range(blocks.GetNumberOfBlocks())]
+
+
+def block_colours_composite(scene):
+    """Per-block colours: the closed spheres' back faces are culled all the same."""
+    actor = composite_actor(scene)
+    shiny(actor)
+    attributes, blocks = block_attributes(actor)
+    attributes.SetBlockColor(blocks[0], (0.2, 0.5, 0.9))
+    two_lights(scene.renderer)
+    finish(scene)
+
+
+def hidden_block_composite(scene):
+    """A block hidden: its block mapper draws the others with their back faces."""
+    actor = composite_actor(scene, ((-0.6, 0.0, 0.0), (0.6, 0.0, 0.0), (0.0, 0.6, 0.0)))
+    shiny(actor)
+    attributes, blocks = block_attributes(actor)
+    attributes.SetBlockVisibility(blocks[2], False)
     two_lights(scene.renderer)
     finish(scene)
 
@@ -657,6 +687,8 @@ CASES = [
     ("surface with edges, Ambient 0.3", surface_with_edges_ambient, "match"),
     ("surface with edges as tubes", surface_with_edges_tubes, "match"),
     ("surface with edges, composite mapper", edges_composite, "match"),
+    ("block colours, composite mapper", block_colours_composite, "match"),
+    ("a hidden block, composite mapper", hidden_block_composite, "match"),
     ("vertex visibility", vertex_visibility, "match"),
     ("points and lines of input without normals", points_and_lines, "match"),
     ("surface without normals as points", points_representation, "match, unlit"),
