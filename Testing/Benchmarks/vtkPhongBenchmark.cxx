@@ -16,6 +16,8 @@
 // 3. Then frame time by interpolation and by mesh, and light culling: 64 point lights
 //    over four spheres, culling off and on (--only culling runs that section alone).
 //    Depth complexity: 8 nested shells against the outer one, with and without the pre-pass.
+//    The same shells as blocks of a multiblock through the composite mappers (ParaView's Phong
+//    Surface and Surface).
 // 4. --only kinds: every light kind at 1, 8 and 32 lights on the sphere and the meshes given.
 //
 // On llvmpipe fragment work runs on the CPU, so shader cost shows in these
@@ -27,8 +29,10 @@
 #include "vtkCamera.h"
 #include "vtkContourFilter.h"
 #include "vtkLight.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongOFFReader.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
@@ -42,6 +46,14 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+#include "vtkCompositePolyDataMapper.h"
+using vtkStockCompositeMapper = vtkCompositePolyDataMapper; // ParaView's from VTK 9.3 on
+#else
+#include "vtkCompositePolyDataMapper2.h"
+using vtkStockCompositeMapper = vtkCompositePolyDataMapper2;
+#endif
 
 #include <malloc.h>
 
@@ -812,6 +824,101 @@ void ShellSection(bool quick)
               " and its lit times are above the unlit floor that culls them, unl bf)\n");
 }
 
+// The shells as the blocks of a multiblock, one contour each, as ParaView draws a group of
+// contours (one block mapper holds them all).
+vtkSmartPointer<vtkMultiBlockDataSet> ShellBlocks(int count, bool innerFirst)
+{
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  for (int i = 0; i < count; ++i)
+  {
+    vtkNew<vtkRTAnalyticSource> source;
+    source->SetWholeExtent(-40, 40, -40, 40, -40, 40);
+    vtkNew<vtkContourFilter> contour;
+    contour->SetInputConnection(source->GetOutputPort());
+    contour->SetValue(0, 200.0 + 9.0 * (innerFirst ? count - 1 - i : i));
+    contour->ComputeNormalsOn();
+    contour->ComputeScalarsOff();
+    contour->Update();
+    blocks->SetBlock(i, contour->GetOutput());
+  }
+  return blocks;
+}
+
+// Depth complexity through the composite mappers, under 8 mixed lights: the stock composite
+// mapper unlit (the floor) and lit, vtkPhong's without the pre-pass and automatic (it culls
+// the closed shells' back faces: its lighting is above the floor that culls them).
+void CompositeShellSection(bool quick)
+{
+  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
+  std::printf("\n== Depth complexity, composite mappers: 8 shells as 8 blocks (%dx%d, 8 mixed "
+              "lights; ms) ==\n",
+    width, height);
+  std::printf("%-18s %6s %6s %6s %6s %6s %7s %7s %7s\n", "geometry", "unlit", "unl bf", "stock",
+    "no pre", "auto", "stk lit", "nop lit", "aut lit");
+  const char* names[] = { "outer shell alone", "8, inner first", "8, outer first" };
+  double outer[3] = { 0.0, 0.0, 0.0 };
+  for (int which = 0; which < 3; ++which)
+  {
+    auto blocks = which == 0 ? ShellBlocks(1, false) : ShellBlocks(8, which == 1);
+    View view(width, height);
+    std::vector<vtkSmartPointer<vtkActor>> actors;
+    std::vector<vtkPhongCompositePolyDataMapper*> ours;
+    for (int k = 0; k < 5; ++k) // unlit, unlit culled, stock, ours off, ours automatic
+    {
+      vtkSmartPointer<vtkStockCompositeMapper> mapper;
+      if (k < 3)
+      {
+        mapper = vtkSmartPointer<vtkStockCompositeMapper>::New();
+      }
+      else
+      {
+        auto phong = vtkSmartPointer<vtkPhongCompositePolyDataMapper>::New();
+        phong->SetDepthPrePass(k == 3 ? vtkPhongPolyDataMapper::DepthPrePassOff
+                                      : vtkPhongPolyDataMapper::DepthPrePassAutomatic);
+        ours.push_back(phong);
+        mapper = phong;
+      }
+      mapper->SetInputDataObject(blocks);
+      auto actor = vtkSmartPointer<vtkActor>::New();
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetColor(0.8, 0.6, 0.4);
+      actor->GetProperty()->SetSpecular(0.5);
+      actor->GetProperty()->SetSpecularPower(30.0);
+      actor->GetProperty()->SetInterpolationToPhong();
+      actor->GetProperty()->SetLighting(k > 1);
+      actor->GetProperty()->SetBackfaceCulling(k == 1);
+      view.Renderer->AddActor(actor);
+      actors.push_back(actor);
+    }
+    view.Frame(Shells(1, false));
+    SetLights(view.Renderer, "8 mixed");
+    Contest contest{ view.Window, view.Renderer, quick ? 2 : 5, quick ? 1 : 3, {} };
+    for (const auto& actor : actors)
+    {
+      contest.Actors.push_back(actor);
+    }
+    const auto t = contest.Run();
+    const bool culled = ours.back()->GetUsedClosedSurfaceCulling();
+    const double lit[3] = { t[2] - t[0], t[3] - t[culled ? 1 : 0], t[4] - t[culled ? 1 : 0] };
+    std::printf("%-18s %6.1f %6.1f %6.1f %6.1f %6.1f %7.1f %7.1f %7.1f%s%s\n", names[which],
+      1e3 * t[0], 1e3 * t[1], 1e3 * t[2], 1e3 * t[3], 1e3 * t[4], 1e3 * lit[0], 1e3 * lit[1],
+      1e3 * lit[2], ours.back()->GetUsedDepthPrePass() ? " +" : "", culled ? " bf" : "");
+    if (which == 0)
+    {
+      std::copy(lit, lit + 3, outer);
+    }
+    else
+    {
+      std::printf("%-18s %34s %6.2fx %6.2fx %6.2fx\n", "  lit / outer's lit", "", lit[0] / outer[0],
+        lit[1] / outer[1], lit[2] / outer[2]);
+    }
+    std::fflush(stdout);
+  }
+  std::printf("(stock: %s; +: Automatic used the pre-pass in the last frame; bf: vtkPhong culled "
+              "the back faces, and its lit times are above the floor that culls them, unl bf)\n",
+    vtkSmartPointer<vtkStockCompositeMapper>::New()->GetClassName());
+}
+
 // Light culling: four spheres on a 2 x 2 grid, each with 16 of 64 point lights close in
 // front of it (inverse-square attenuation; the scene of TestPhongLightCulling). vtkPhong
 // with culling off (bound 0) and on (the default 0.5/255, 16 lights per sphere), the stock
@@ -951,6 +1058,7 @@ int main(int argc, char* argv[])
   if (wanted("shells"))
   {
     ShellSection(quick);
+    CompositeShellSection(quick);
   }
   if (only == "kinds" || (only.empty() && quick))
   {

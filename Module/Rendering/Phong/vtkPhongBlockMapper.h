@@ -32,6 +32,7 @@
 #include "vtkPhongClosedSurface.h"
 #include "vtkPhongCompatibility.h"
 #include "vtkPhongCompositePolyDataMapper.h"
+#include "vtkPhongDepthPrePass.h"
 #include "vtkPhongMapperCore.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -50,13 +51,18 @@ public:
 
   vtkPhongMapperCore* GetCore() { return this->Core; }
 
+  ///@{
   /**
-   * Whether the last draw culled the back faces of closed surfaces (RenderPieceDraw).
+   * Whether the last draw culled the back faces of closed surfaces, and whether it drew with
+   * the depth pre-pass (RenderPieceDraw).
    */
   bool GetUsedClosedSurfaceCulling() const { return this->UsedClosedSurfaceCulling; }
+  bool GetUsedDepthPrePass() const { return this->UsedDepthPrePass; }
+  ///@}
 
   void ReleaseGraphicsResources(vtkWindow* window) override
   {
+    this->PrePass.ReleaseGraphicsResources(window);
     this->Core->ReleaseGraphicsResources();
     this->Superclass::ReleaseGraphicsResources(window);
   }
@@ -98,6 +104,7 @@ protected:
       this->Core->Options.Specialize = parent->GetShaderSpecialization();
       this->Core->Options.LightCullingBound = parent->GetLightCullingBound();
     }
+    this->Core->Options.DepthOnly = this->DrawingDepthOnly;
     return this->Core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
   }
 
@@ -200,16 +207,54 @@ protected:
     vtkPolyData* Original;
   };
 
-  // Culls the back faces of closed surfaces as vtkPhongPolyDataMapper does
-  // (vtkPhongClosedSurface), over all the blocks in the vertex buffer: only when every one of
-  // them is drawn in this pass, visible and opaque, since a block left out could open a
-  // surface the others close.
+  // As vtkPhongPolyDataMapper draws, over all the blocks in the vertex buffer: with the back
+  // faces of closed surfaces culled (vtkPhongClosedSurface), only when every block is drawn
+  // in this pass, visible and opaque, since a block left out could open a surface the others
+  // close; then plainly or with the depth pre-pass (vtkPhongDepthPrePass).
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override
   {
-    const unsigned int hiddenFaces = this->HiddenFaces(ren, act);
+    const bool wellColoured = !this->MixesPointAndCellScalars();
+    const unsigned int hiddenFaces = wellColoured ? this->HiddenFaces(ren, act) : 0;
     this->UsedClosedSurfaceCulling = hiddenFaces != 0;
     vtkPhongClosedSurface::ScopedCulling culling(ren, hiddenFaces);
-    this->Superclass::RenderPieceDraw(ren, act);
+    auto* parent = vtkPhongCompositePolyDataMapper::SafeDownCast(this->Parent);
+    const int mode =
+      parent && wellColoured ? parent->GetDepthPrePass() : vtkPhongPolyDataMapper::DepthPrePassOff;
+    double triangles = 0.0;
+    for (vtkPolyData* block : this->GetRenderedList())
+    {
+      triangles += static_cast<double>(block->GetNumberOfPolys() + block->GetNumberOfStrips());
+    }
+    this->UsedDepthPrePass = this->PrePass.Draw(mode, ren, act, this, triangles, triangles,
+      this->Core->GetNumberOfCulledLights(),
+      [&](bool depthOnly)
+      {
+        this->DrawingDepthOnly = depthOnly;
+        this->Superclass::RenderPieceDraw(ren, act);
+        this->DrawingDepthOnly = false;
+      });
+  }
+
+  // VTK 9.1 groups blocks by whether they have scalars, not by whether these are point or
+  // cell scalars, then colours the whole group as its last block says: the others read
+  // colours they do not have, some with an alpha of 0 that the shader discards. A plain draw
+  // then shows what lies behind; the lit draw after a depth pass would show holes, and culled
+  // back faces would hide what stock VTK shows. Neither is used for such groups.
+  bool MixesPointAndCellScalars()
+  {
+    bool point = false, cell = false;
+    for (vtkPolyData* block : this->GetRenderedList())
+    {
+      int cellFlag = 0;
+      if (this->ScalarVisibility &&
+        vtkAbstractMapper::GetAbstractScalars(
+          block, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag))
+      {
+        point = point || cellFlag == 0;
+        cell = cell || cellFlag != 0;
+      }
+    }
+    return point && cell;
   }
 
   unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act)
@@ -301,6 +346,9 @@ protected:
   vtkNew<vtkPhongMapperCore> Core;
   vtkPhongClosedSurface ClosedSurface;
   bool UsedClosedSurfaceCulling = false;
+  vtkPhongDepthPrePass PrePass;
+  bool UsedDepthPrePass = false;
+  bool DrawingDepthOnly = false;
 
 private:
   vtkPhongBlockMapper(const vtkPhongBlockMapper&) = delete;

@@ -58,6 +58,20 @@ struct vtkPhongCompositePolyDataMapper::Internals
       std::remove_if(this->Helpers.begin(), this->Helpers.end(), expired), this->Helpers.end());
   }
 
+  // Whether a helper's statement about its last draw holds for any helper.
+  bool Any(bool (vtkPhongHelper::*statement)() const)
+  {
+    this->Prune();
+    for (const auto& helper : this->Helpers)
+    {
+      if ((static_cast<vtkPhongHelper*>(helper.first.GetPointer())->*statement)())
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
   // A statistic of the helpers' cores, summed.
   int Sum(int (vtkPhongMapperCore::*statistic)() const)
   {
@@ -185,16 +199,13 @@ int vtkPhongCompositePolyDataMapper::GetNumberOfShaderVariants()
 //------------------------------------------------------------------------------
 bool vtkPhongCompositePolyDataMapper::GetUsedClosedSurfaceCulling()
 {
-  this->Internal->Prune();
-  for (const auto& helper : this->Internal->Helpers)
-  {
-    auto* blockMapper = static_cast<vtkPhongHelper*>(helper.first.GetPointer());
-    if (blockMapper->GetUsedClosedSurfaceCulling())
-    {
-      return true;
-    }
-  }
-  return false;
+  return this->Internal->Any(&vtkPhongHelper::GetUsedClosedSurfaceCulling);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongCompositePolyDataMapper::GetUsedDepthPrePass()
+{
+  return this->Internal->Any(&vtkPhongHelper::GetUsedDepthPrePass);
 }
 
 //------------------------------------------------------------------------------
@@ -220,6 +231,8 @@ void vtkPhongCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
+  os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
+  os << indent << "UsedDepthPrePass: " << (this->GetUsedDepthPrePass() ? "yes" : "no") << "\n";
   os << indent << "ClosedSurfaceCulling: " << (this->ClosedSurfaceCulling ? "On" : "Off") << "\n";
   os << indent
      << "UsedClosedSurfaceCulling: " << (this->GetUsedClosedSurfaceCulling() ? "yes" : "no")

@@ -109,6 +109,20 @@ public:
 
   ///@{
   /**
+   * Depth pre-pass, as vtkPhongPolyDataMapper::SetDepthPrePass, for each helper's blocks
+   * together (without its occlusion culling of triangle clusters). Default
+   * DepthPrePassAutomatic; one of vtkPhongPolyDataMapper::DepthPrePassModes (clamped).
+   * Never for a helper whose blocks mix point and cell scalars, which VTK 9.1 colours wrongly.
+   * UsedDepthPrePass: whether a helper drew with it in the last render.
+   */
+  vtkSetClampMacro(DepthPrePass, int, vtkPhongPolyDataMapper::DepthPrePassOff,
+    vtkPhongPolyDataMapper::DepthPrePassAutomatic);
+  vtkGetMacro(DepthPrePass, int);
+  bool GetUsedDepthPrePass();
+  ///@}
+
+  ///@{
+  /**
    * Shader statistics summed over the helpers (one helper per kind of block: with or
    * without scalars, normals, texture coordinates), as vtkPhongPolyDataMapper reports them
    * for itself; and the lighting signature of the last variant a helper built (empty when
@@ -160,6 +174,7 @@ protected:
   bool ShaderSpecialization = true;
   double LightCullingBound = 0.5 / 255.0;
   bool ClosedSurfaceCulling = true;
+  int DepthPrePass = vtkPhongPolyDataMapper::DepthPrePassAutomatic;
 
 private:
   vtkPhongCompositePolyDataMapper(const vtkPhongCompositePolyDataMapper&) = delete;

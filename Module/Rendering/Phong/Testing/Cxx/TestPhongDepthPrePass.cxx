@@ -15,6 +15,8 @@
 #include "vtkContourFilter.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongOFFReader.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkSelection.h"
@@ -332,6 +334,62 @@ void CheckOcclusionCulling(PrePassScene& scene, vtkPhongTest::Checks& checks)
   scene.ShellActor->VisibilityOn();
 }
 
+// The composite mapper (ParaView's Phong Surface) draws each helper's blocks with the
+// pre-pass too: the shells and a sphere without scalars (two helpers), identical with and
+// without it, and Automatic takes it up for the shells after its probe. The shells beside a
+// cell-coloured sphere share a helper on VTK 9.1, which colours one of the two wrongly (the
+// scalars of the block appended last decide): that helper draws plainly, as stock VTK does.
+void CheckComposite(PrePassScene& scene, vtkPhongTest::Checks& checks)
+{
+  auto plain = vtkPhongTest::MakeSphere(32, 3.0);
+  auto banded = vtkPhongTest::MakeBandedSphere(3.0);
+  for (vtkPolyData* second : { plain.GetPointer(), banded.GetPointer() })
+  {
+    const std::string what = second == plain ? "composite, shells and a sphere"
+                                             : "composite, shells and a cell-coloured sphere";
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetBlock(0, NestedShells());
+    blocks->SetBlock(1, second);
+    vtkNew<vtkPhongCompositePolyDataMapper> mapper;
+    mapper->SetInputDataObject(blocks);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetSpecular(0.4);
+    scene.ShellActor->VisibilityOff();
+    scene.View.Renderer->AddActor(actor);
+    scene.View.Window->SetSize(400, 400);
+    auto render = [&](int mode)
+    {
+      mapper->SetDepthPrePass(mode);
+      scene.View.Window->Render();
+      return vtkPhongTest::Snapshot(scene.View.Window);
+    };
+    const auto off = render(vtkPhongPolyDataMapper::DepthPrePassOff);
+    const auto on = render(vtkPhongPolyDataMapper::DepthPrePassOn);
+    const bool mixedHelper = second == banded && mapper->GetNumberOfHelpers() == 1;
+    checks.Expect(mapper->GetUsedDepthPrePass() != mixedHelper,
+      what + ", on: the pre-pass is " + (mixedHelper ? "not used (one helper)" : "used"));
+    const int differing = vtkPhongTest::CountDifferentPixels(off, on, 0);
+    checks.Expect(differing == 0,
+      what + ": identical with and without the pre-pass (" + std::to_string(differing) +
+        " pixels differ)");
+    if (second == plain)
+    {
+      std::vector<bool> used;
+      mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassAutomatic);
+      for (int frame = 0; frame < 4; ++frame)
+      {
+        scene.View.Window->Render();
+        used.push_back(mapper->GetUsedDepthPrePass());
+      }
+      checks.Expect(used[1] && used[3], what + ", automatic, 8 lights: probed, then kept");
+    }
+    scene.View.Renderer->RemoveActor(actor);
+  }
+  scene.ShellActor->VisibilityOn();
+  scene.View.Window->SetSize(200, 200);
+}
+
 // The pre-pass used in each of `frames` frames drawn with Automatic.
 std::vector<bool> AutomaticFrames(PrePassScene& scene, vtkPhongPolyDataMapper* mapper, int frames)
 {
@@ -413,6 +471,7 @@ int TestPhongDepthPrePass(int argc, char* argv[])
     "float: identical with and without the pre-pass");
 
   CheckCellColours(scene, checks);
+  CheckComposite(scene, checks);
   CheckOcclusionCulling(scene, checks);
   CheckAutomatic(scene, checks);
 
