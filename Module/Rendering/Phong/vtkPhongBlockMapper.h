@@ -27,6 +27,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
+#include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLShaderProperty.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPhongClosedSurface.h"
@@ -34,8 +35,11 @@
 #include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongDepthPrePass.h"
 #include "vtkPhongMapperCore.h"
+#include "vtkPhongVisibleClusters.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkSelection.h"
 #include "vtkShaderProperty.h"
 
@@ -63,6 +67,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window) override
   {
     this->PrePass.ReleaseGraphicsResources(window);
+    this->Clusters.ReleaseGraphicsResources(window);
     this->Core->ReleaseGraphicsResources();
     this->Superclass::ReleaseGraphicsResources(window);
   }
@@ -210,11 +215,15 @@ protected:
   // As vtkPhongPolyDataMapper draws, over all the blocks in the vertex buffer: with the back
   // faces of closed surfaces culled (vtkPhongClosedSurface), only when every block is drawn
   // in this pass, visible and opaque, since a block left out could open a surface the others
-  // close; then plainly or with the depth pre-pass (vtkPhongDepthPrePass).
+  // close; then plainly or with the depth pre-pass (vtkPhongDepthPrePass), whose depth pass
+  // may draw only the triangle clusters seen in the last frames (vtkPhongVisibleClusters),
+  // again only when every block is drawn: the clusters are all the blocks' triangles.
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override
   {
     const bool wellColoured = !this->MixesPointAndCellScalars();
-    const unsigned int hiddenFaces = wellColoured ? this->HiddenFaces(ren, act) : 0;
+    std::vector<vtkPhongClosedSurface::Block> blocks;
+    const bool everyBlock = wellColoured && this->EveryBlockDrawn(blocks);
+    const unsigned int hiddenFaces = everyBlock ? this->HiddenFaces(ren, act, blocks) : 0;
     this->UsedClosedSurfaceCulling = hiddenFaces != 0;
     vtkPhongClosedSurface::ScopedCulling culling(ren, hiddenFaces);
     auto* parent = vtkPhongCompositePolyDataMapper::SafeDownCast(this->Parent);
@@ -225,14 +234,55 @@ protected:
     {
       triangles += static_cast<double>(block->GetNumberOfPolys() + block->GetNumberOfStrips());
     }
-    this->UsedDepthPrePass = this->PrePass.Draw(mode, ren, act, this, triangles, triangles,
+    const bool clustered = everyBlock && this->CanCullDepthPass(ren, act, mode);
+    const double depthTriangles = clustered && this->Clusters.GetNumberOfTriangles() > 0
+      ? this->Clusters.CollectVisibility()
+      : triangles;
+    this->UsedDepthPrePass = this->PrePass.Draw(mode, ren, act, this, triangles, depthTriangles,
       this->Core->GetNumberOfCulledLights(),
       [&](bool depthOnly)
       {
         this->DrawingDepthOnly = depthOnly;
-        this->Superclass::RenderPieceDraw(ren, act);
+        if (depthOnly && clustered &&
+          this->Clusters.Update(ren->GetRenderWindow(),
+            this->Primitives[BlockMapper::PrimitiveTris].IBO, this->PointsInBuffer(blocks),
+            this->VBOBuildTime.GetMTime()))
+        {
+          this->DrawingVertices = false;
+          this->DrawingSelection = false;
+          this->UpdateShaders(this->Primitives[BlockMapper::PrimitiveTris], ren, act);
+          this->Clusters.Draw(ren, act);
+        }
+        else
+        {
+          this->Superclass::RenderPieceDraw(ren, act);
+        }
         this->DrawingDepthOnly = false;
       });
+  }
+
+  // Triangles alone (the clusters are the triangles'), from the renderer's camera into the
+  // picture's depth buffer, as vtkPhongPolyDataMapper::CanCullDepthPass.
+  bool CanCullDepthPass(vtkRenderer* ren, vtkActor* act, int mode)
+  {
+    const bool onlyTriangles = this->Primitives[BlockMapper::PrimitiveTris].IBO->IndexCount > 0 &&
+      this->Primitives[BlockMapper::PrimitivePoints].IBO->IndexCount == 0 &&
+      this->Primitives[BlockMapper::PrimitiveLines].IBO->IndexCount == 0 &&
+      this->Primitives[BlockMapper::PrimitiveTriStrips].IBO->IndexCount == 0;
+    return mode != vtkPhongPolyDataMapper::DepthPrePassOff && onlyTriangles &&
+      !ren->GetSelector() && vtkPhongDepthPrePass::CanMeasure(this, act);
+  }
+
+  // The points of the blocks in the vertex buffer's order, kept from one upload to the next
+  // (a copy when the buffer holds several blocks).
+  vtkPolyData* PointsInBuffer(const std::vector<vtkPhongClosedSurface::Block>& blocks)
+  {
+    if (this->BufferPointsTime < this->VBOBuildTime.GetMTime() || !this->BufferPoints)
+    {
+      this->BufferPoints = vtkPhongClosedSurface::PointsOfBlocks(blocks);
+      this->BufferPointsTime = this->VBOBuildTime.GetMTime();
+    }
+    return this->BufferPoints;
   }
 
   // VTK 9.1 groups blocks by whether they have scalars, not by whether these are point or
@@ -257,7 +307,10 @@ protected:
     return point && cell;
   }
 
-  unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act)
+  // The faces to cull, or 0, as vtkPhongPolyDataMapper::HiddenFaces decides, for `blocks`,
+  // every block in the vertex buffer.
+  unsigned int HiddenFaces(
+    vtkRenderer* ren, vtkActor* act, const std::vector<vtkPhongClosedSurface::Block>& blocks)
   {
     auto* parent = vtkPhongCompositePolyDataMapper::SafeDownCast(this->Parent);
     if (!parent || !parent->GetClosedSurfaceCulling())
@@ -272,10 +325,9 @@ protected:
     const int clippingPlanes =
       this->GetNumberOfClippingPlanes() + parent->GetNumberOfClippingPlanes();
     vtkSelection* selection = parent->GetSelection();
-    std::vector<vtkPhongClosedSurface::Block> blocks;
     if (!vtkPhongClosedSurface::DrawsOnlySurfaces(
           ren, act, this->Primitives, legacyShaders, clippingPlanes) ||
-      (selection && selection->GetNumberOfNodes() > 0) || !this->EveryBlockDrawn(blocks))
+      (selection && selection->GetNumberOfNodes() > 0))
     {
       return 0;
     }
@@ -284,21 +336,24 @@ protected:
     return this->ClosedSurface.HiddenFaces(ren, act, parent->GetBounds());
   }
 
-  // Whether every block in the vertex buffer is visible and opaque, with the points each
-  // uploaded (its valid copy's, from its first vertex on).
+  // Whether every block in the vertex buffer is visible and opaque; `blocks`: all of them,
+  // with the points each uploaded (its valid copy's, from its first vertex on), or none when
+  // the buffer does not hold what the blocks say.
   bool EveryBlockDrawn(std::vector<vtkPhongClosedSurface::Block>& blocks)
   {
+    bool everyBlock = true;
     for (const BlockInBuffer& block : this->BlocksInBuffer())
     {
       vtkPolyData* uploaded = this->ValidBlock(block.Data);
-      if (!block.VisibleAndOpaque || !uploaded ||
-        block.NextVertex - block.StartVertex != uploaded->GetNumberOfPoints())
+      if (!uploaded || block.NextVertex - block.StartVertex != uploaded->GetNumberOfPoints())
       {
+        blocks.clear();
         return false;
       }
+      everyBlock = everyBlock && block.VisibleAndOpaque;
       blocks.push_back({ uploaded, static_cast<vtkIdType>(block.StartVertex) });
     }
-    return !blocks.empty();
+    return everyBlock && !blocks.empty();
   }
 
   struct BlockInBuffer
@@ -347,6 +402,9 @@ protected:
   vtkPhongClosedSurface ClosedSurface;
   bool UsedClosedSurfaceCulling = false;
   vtkPhongDepthPrePass PrePass;
+  vtkPhongVisibleClusters Clusters;
+  vtkSmartPointer<vtkPolyData> BufferPoints;
+  vtkMTimeType BufferPointsTime = 0;
   bool UsedDepthPrePass = false;
   bool DrawingDepthOnly = false;
 

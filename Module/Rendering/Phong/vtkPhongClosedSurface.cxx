@@ -103,9 +103,7 @@ void vtkPhongClosedSurface::Update(
       return;
     }
   }
-  vtkSmartPointer<vtkPolyData> points = blocks.size() == 1 && blocks[0].FirstPoint == 0
-    ? vtkSmartPointer<vtkPolyData>(blocks[0].Data)
-    : PointsOfBlocks(blocks);
+  vtkSmartPointer<vtkPolyData> points = PointsOfBlocks(blocks);
   std::vector<unsigned int> indices;
   if (points && vtkPhongVisibleClusters::ReadIndices(triangles, indices))
   {
@@ -123,12 +121,12 @@ void vtkPhongClosedSurface::Analyse(std::vector<unsigned int>& indices, vtkPolyD
 }
 
 //------------------------------------------------------------------------------
-// The points of the vertex buffer the blocks share, in its order; nullptr when two blocks
-// claim the same vertices with points of their own (blocks with the same points array share
-// its vertices: VTK uploads it once). Vertices no block claims stay NaN, which rules culling
-// out if a triangle uses one.
 vtkSmartPointer<vtkPolyData> vtkPhongClosedSurface::PointsOfBlocks(const std::vector<Block>& blocks)
 {
+  if (blocks.size() == 1 && blocks[0].FirstPoint == 0)
+  {
+    return blocks[0].Data;
+  }
   struct Range
   {
     vtkIdType First, Last; // [First, Last)

@@ -82,6 +82,14 @@ public:
     vtkOpenGLIndexBufferObject* triangles, const std::vector<Block>& blocks, vtkMTimeType builtAt);
 
   /**
+   * The points of the vertex buffer the blocks share, in its order (the one block itself
+   * when it starts the buffer); nullptr when two blocks claim the same vertices with points
+   * of their own (blocks with the same points array share its vertices: VTK uploads it
+   * once). Vertices no block claims are NaN.
+   */
+  static vtkSmartPointer<vtkPolyData> PointsOfBlocks(const std::vector<Block>& blocks);
+
+  /**
    * +1: closed surfaces, each enclosing its volume with outward faces; -1: all inward;
    * 0: not closed surfaces (or not analysed), nothing may be culled.
    */
@@ -126,7 +134,6 @@ public:
 
 private:
   void Analyse(std::vector<unsigned int>& indices, vtkPolyData* input);
-  static vtkSmartPointer<vtkPolyData> PointsOfBlocks(const std::vector<Block>& blocks);
   static bool HasConcavePolygons(vtkPolyData* input);
   static bool HasShaderCode(vtkActor* act, vtkShaderProperty* legacyShaders);
   static std::vector<vtkIdType> WeldPoints(vtkPolyData* input);

@@ -213,6 +213,22 @@ int vtkPhongSurfaceRepresentation::GetUsedClosedSurfaceCulling()
 }
 
 //------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetDepthPrePass(int mode)
+{
+  for (vtkMapper* mapper : { this->Mapper, this->LODMapper })
+  {
+    vtkPhongCompositePolyDataMapper::SafeDownCast(mapper)->SetDepthPrePass(mode);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongSurfaceRepresentation::GetUsedDepthPrePass()
+{
+  return vtkPhongCompositePolyDataMapper::SafeDownCast(this->Mapper)->GetUsedDepthPrePass() ? 1
+                                                                                               : 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetComputeNormals(int compute)
 {
   if (this->ComputeNormals != (compute != 0))

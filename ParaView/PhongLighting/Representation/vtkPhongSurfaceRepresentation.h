@@ -83,6 +83,13 @@ public:
   int GetUsedClosedSurfaceCulling();
 
   /**
+   * The depth pre-pass (vtkPhongCompositePolyDataMapper::SetDepthPrePass: 0 off, 1 on, 2
+   * automatic, the default) and whether the last render used it (1) or not (0).
+   */
+  void SetDepthPrePass(int mode);
+  int GetUsedDepthPrePass();
+
+  /**
    * On (default): the surface's normals are computed by vtkOpenMeshNormals. Off: the normals
    * the surface carries are drawn (none: faceted, as ParaView's Surface representation).
    */
