@@ -15,9 +15,10 @@
  * vtkCompositeDataDisplayAttributes keep working (the lighting then reads VTK's per-block
  * colour variables instead of ready-made material products).
  *
- * The back faces of closed surfaces seen from outside are culled as vtkPhongPolyDataMapper
- * culls them (SetClosedSurfaceCulling), over each helper's blocks together, while all of
- * them are visible and opaque.
+ * As vtkPhongPolyDataMapper, it culls the back faces of closed surfaces seen from outside
+ * (SetClosedSurfaceCulling) and draws deep scenes with the automatic depth pre-pass
+ * (SetDepthPrePass), over each helper's blocks together: culling (of back faces, of the
+ * depth pass's hidden triangle clusters) only while all of them are visible and opaque.
  *
  * The material is the actor's vtkProperty or vtkPhongProperty, exactly as for
  * vtkPhongPolyDataMapper. Unlike that mapper, this one does not compute missing normals
