@@ -206,8 +206,7 @@ void vtkPhongSurfaceRepresentation::SetClosedSurfaceCulling(int cull)
 int vtkPhongSurfaceRepresentation::GetUsedClosedSurfaceCulling()
 {
   // The full-resolution mapper's: the level-of-detail one keeps what it did when last used.
-  return vtkPhongCompositePolyDataMapper::SafeDownCast(this->Mapper)
-           ->GetUsedClosedSurfaceCulling()
+  return vtkPhongCompositePolyDataMapper::SafeDownCast(this->Mapper)->GetUsedClosedSurfaceCulling()
     ? 1
     : 0;
 }
@@ -224,8 +223,7 @@ void vtkPhongSurfaceRepresentation::SetDepthPrePass(int mode)
 //------------------------------------------------------------------------------
 int vtkPhongSurfaceRepresentation::GetUsedDepthPrePass()
 {
-  return vtkPhongCompositePolyDataMapper::SafeDownCast(this->Mapper)->GetUsedDepthPrePass() ? 1
-                                                                                               : 0;
+  return vtkPhongCompositePolyDataMapper::SafeDownCast(this->Mapper)->GetUsedDepthPrePass() ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
