@@ -1,11 +1,12 @@
 """Frame time of "Phong Surface" (with and without culling the back faces) against
-ParaView's "Surface" on a sphere of several million triangles, at two image sizes, for
-however many ranks pvbatch runs on:
+ParaView's "Surface" on a sphere of several million triangles, then on 8 nested contours
+(with and without the depth pre-pass), at two image sizes, for however many ranks pvbatch
+runs on:
 
     pvbatch --disable-xdisplay-test BenchPhongParaView.py --plugin PhongLighting.so
     mpiexec -np 2 pvbatch --disable-xdisplay-test BenchPhongParaView.py --plugin ...
 
-(./vtkphong.sh paraview-bench runs both.) Prints one table; asserts nothing. The two
+(./vtkphong.sh paraview-bench runs both.) Prints two tables; asserts nothing. The
 representations take turns, batch after batch, in one view; a frame is Render() of a
 still (non-LOD) frame, composited by IceT when there are several ranks.
 """
@@ -19,8 +20,8 @@ from phong_paraview_testing import prefer_pythonpath
 prefer_pythonpath()
 
 from paraview import servermanager  # noqa: E402
-from paraview.simple import (AddLight, CreateRenderView, LoadPlugin, Render,  # noqa: E402
-                             Show, Sphere)
+from paraview.simple import (AddLight, Contour, CreateRenderView, LoadPlugin,  # noqa: E402
+                             Render, Show, Sphere, Wavelet)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -59,27 +60,40 @@ for name in ("Surface", "Phong Surface", UNCULLED):
 
 camera = view.GetActiveCamera()
 triangles = 2 * args.resolution * (args.resolution - 2)
-rows = []
-for size in ((800, 600), (1600, 1200)):
-    view.ViewSize = list(size)
-    view.ResetCamera()
-    times = {name: [] for name in displays}
-    for name in displays:  # build buffers and shaders first
-        for other, display in displays.items():
-            display.Visibility = int(other == name)
-        Render(view)
-    for _ in range(args.batches):
-        for name in displays:
+
+
+def time_displays(displays, sizes):
+    """Median frame time (ms) of each display shown alone, per image size: the displays
+    take turns, batch after batch."""
+    rows = []
+    for size in sizes:
+        view.ViewSize = list(size)
+        view.ResetCamera()
+        times = {name: [] for name in displays}
+        for name in displays:  # build buffers and shaders first
             for other, display in displays.items():
                 display.Visibility = int(other == name)
             Render(view)
-            start = time.perf_counter()
-            for frame in range(args.frames):
-                # A camera that moves makes every Render() draw (an unchanged scene may not).
-                camera.Azimuth(0.05 if frame % 2 else -0.05)
+            Render(view)  # Automatic's probe of the depth pre-pass
+        for _ in range(args.batches):
+            for name in displays:
+                for other, display in displays.items():
+                    display.Visibility = int(other == name)
                 Render(view)
-            times[name].append((time.perf_counter() - start) / args.frames)
-    rows.append((size, [1e3 * statistics.median(times[name]) for name in displays]))
+                start = time.perf_counter()
+                for frame in range(args.frames):
+                    # A camera that moves makes every Render() draw (an unchanged scene may
+                    # not).
+                    camera.Azimuth(0.05 if frame % 2 else -0.05)
+                    Render(view)
+                times[name].append((time.perf_counter() - start) / args.frames)
+        rows.append((size, [1e3 * statistics.median(times[name]) for name in displays]))
+    for display in displays.values():
+        display.Visibility = 0
+    return rows
+
+
+rows = time_displays(displays, ((800, 600), (1600, 1200)))
 
 # Serially the sphere is closed and Phong Surface culls its back faces; split between ranks
 # each piece is open and drawn whole (the third column: culling off).
@@ -90,3 +104,26 @@ print("%-10s %14s %18s %24s %8s %8s" % ("image", "Surface (ms)", "Phong Surface 
 for size, (stock, ours, unculled) in rows:
     print("%-10s %14.1f %18.1f %24.1f %7.2fx %7.2fx"
           % ("%dx%d" % size, stock, ours, unculled, ours / stock, unculled / stock))
+
+# Deep scenes: 8 nested contours of the Wavelet (81^3 samples), under the same lights:
+# ParaView's Surface, Phong Surface (its depth pre-pass automatic) and Phong Surface with
+# the pre-pass off.
+NO_PRE_PASS = "Phong, no pre-pass"
+contours = {}
+for name in ("Surface", "Phong Surface", NO_PRE_PASS):
+    shells = Contour(Input=Wavelet(WholeExtent=[-40, 40, -40, 40, -40, 40]),
+                     ContourBy=["POINTS", "RTData"],
+                     Isosurfaces=[200.0 + 9.0 * i for i in range(8)])
+    display = Show(shells, view)
+    display.SetRepresentationType("Surface" if name == "Surface" else "Phong Surface")
+    display.ColorArrayName = [None, ""]
+    display.Specular = 0.5
+    if name == NO_PRE_PASS:
+        display.DepthPrePass = "Off"
+    contours[name] = display
+print("ranks %d, 8 nested contours of the Wavelet (81^3 samples), same lights" % ranks)
+print("%-10s %14s %18s %24s %8s %8s" % ("image", "Surface (ms)", "Phong Surface (ms)",
+                                        NO_PRE_PASS + " (ms)", "ratio", "no pre"))
+for size, (stock, ours, plain) in time_displays(contours, ((800, 600), (1600, 1200))):
+    print("%-10s %14.1f %18.1f %24.1f %7.2fx %7.2fx"
+          % ("%dx%d" % size, stock, ours, plain, ours / stock, plain / stock))
