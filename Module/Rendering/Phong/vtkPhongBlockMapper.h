@@ -234,7 +234,8 @@ protected:
     {
       triangles += static_cast<double>(block->GetNumberOfPolys() + block->GetNumberOfStrips());
     }
-    const bool clustered = everyBlock && this->CanCullDepthPass(ren, act, mode);
+    const bool clustered = everyBlock && parent && parent->GetDepthPrePassOcclusionCulling() &&
+      this->CanCullDepthPass(ren, act, mode);
     const double depthTriangles = clustered && this->Clusters.GetNumberOfTriangles() > 0
       ? this->Clusters.CollectVisibility()
       : triangles;

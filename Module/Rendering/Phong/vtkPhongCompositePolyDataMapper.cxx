@@ -233,6 +233,9 @@ void vtkPhongCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "UsedDepthPrePass: " << (this->GetUsedDepthPrePass() ? "yes" : "no") << "\n";
+  os << indent
+     << "DepthPrePassOcclusionCulling: " << (this->DepthPrePassOcclusionCulling ? "On" : "Off")
+     << "\n";
   os << indent << "ClosedSurfaceCulling: " << (this->ClosedSurfaceCulling ? "On" : "Off") << "\n";
   os << indent
      << "UsedClosedSurfaceCulling: " << (this->GetUsedClosedSurfaceCulling() ? "yes" : "no")

@@ -124,6 +124,17 @@ public:
 
   ///@{
   /**
+   * Occlusion culling of the depth pre-pass, as
+   * vtkPhongPolyDataMapper::SetDepthPrePassOcclusionCulling, over each helper's blocks
+   * together, while every one of them is visible and opaque. Default on.
+   */
+  vtkSetMacro(DepthPrePassOcclusionCulling, bool);
+  vtkGetMacro(DepthPrePassOcclusionCulling, bool);
+  vtkBooleanMacro(DepthPrePassOcclusionCulling, bool);
+  ///@}
+
+  ///@{
+  /**
    * Shader statistics summed over the helpers (one helper per kind of block: with or
    * without scalars, normals, texture coordinates), as vtkPhongPolyDataMapper reports them
    * for itself; and the lighting signature of the last variant a helper built (empty when
@@ -176,6 +187,7 @@ protected:
   double LightCullingBound = 0.5 / 255.0;
   bool ClosedSurfaceCulling = true;
   int DepthPrePass = vtkPhongPolyDataMapper::DepthPrePassAutomatic;
+  bool DepthPrePassOcclusionCulling = true;
 
 private:
   vtkPhongCompositePolyDataMapper(const vtkPhongCompositePolyDataMapper&) = delete;

@@ -404,6 +404,16 @@ void CheckComposite(PrePassScene& scene, vtkPhongTest::Checks& checks)
     checks.Expect(mapper->GetUsedDepthPrePass() != mixedHelper,
       what + ", on: the pre-pass is " + (mixedHelper ? "not used (one helper)" : "used"));
     const auto fourth = render(vtkPhongPolyDataMapper::DepthPrePassOn, 3);
+    if (second == hidden)
+    {
+      // The same helper with the clusters off: the plain depth pass leaves the hidden block
+      // out as the lit draw does.
+      mapper->DepthPrePassOcclusionCullingOff();
+      const auto unclustered = render(vtkPhongPolyDataMapper::DepthPrePassOn, 4);
+      checks.Expect(vtkPhongTest::CountDifferentPixels(off, unclustered, 0) == 0,
+        what + ", occlusion culling off: identical");
+      mapper->DepthPrePassOcclusionCullingOn();
+    }
     const int differing = vtkPhongTest::CountDifferentPixels(off, on, 0);
     const int differingLater = vtkPhongTest::CountDifferentPixels(off, fourth, 0);
     checks.Expect(differing == 0 && differingLater == 0,
