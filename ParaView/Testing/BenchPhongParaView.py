@@ -46,17 +46,28 @@ for index, (kind, position) in enumerate((("Directional", [1, 1, 2]), ("Position
     light.ConeAngle = 90.0 if index == 1 else 25.0
     light.Intensity = 0.6
 
-displays = {}
+
+def contenders(make_source, third, setting, plain_colour=False):
+    """ParaView's Surface, Phong Surface, and Phong Surface with `setting` (a property name
+    and value) as `third`, each showing a source of its own (Show() of one source twice
+    returns the same display)."""
+    displays = {}
+    for name in ("Surface", "Phong Surface", third):
+        display = Show(make_source(), view)
+        display.SetRepresentationType("Surface" if name == "Surface" else "Phong Surface")
+        if plain_colour:
+            display.ColorArrayName = [None, ""]
+        display.Specular = 0.5
+        if name == third:
+            setattr(display, *setting)
+        displays[name] = display
+    return displays
+
+
 UNCULLED = "Phong, back faces drawn"
-for name in ("Surface", "Phong Surface", UNCULLED):
-    # One source per representation: Show() of one source twice returns the same display.
-    sphere = Sphere(ThetaResolution=args.resolution, PhiResolution=args.resolution)
-    display = Show(sphere, view)
-    display.SetRepresentationType("Surface" if name == "Surface" else "Phong Surface")
-    display.Specular = 0.5
-    if name == UNCULLED:
-        display.CullHiddenBackFaces = 0
-    displays[name] = display
+displays = contenders(
+    lambda: Sphere(ThetaResolution=args.resolution, PhiResolution=args.resolution),
+    UNCULLED, ("CullHiddenBackFaces", 0))
 
 camera = view.GetActiveCamera()
 triangles = 2 * args.resolution * (args.resolution - 2)
@@ -109,18 +120,11 @@ for size, (stock, ours, unculled) in rows:
 # ParaView's Surface, Phong Surface (its depth pre-pass automatic) and Phong Surface with
 # the pre-pass off.
 NO_PRE_PASS = "Phong, no pre-pass"
-contours = {}
-for name in ("Surface", "Phong Surface", NO_PRE_PASS):
-    shells = Contour(Input=Wavelet(WholeExtent=[-40, 40, -40, 40, -40, 40]),
-                     ContourBy=["POINTS", "RTData"],
-                     Isosurfaces=[200.0 + 9.0 * i for i in range(8)])
-    display = Show(shells, view)
-    display.SetRepresentationType("Surface" if name == "Surface" else "Phong Surface")
-    display.ColorArrayName = [None, ""]
-    display.Specular = 0.5
-    if name == NO_PRE_PASS:
-        display.DepthPrePass = "Off"
-    contours[name] = display
+contours = contenders(
+    lambda: Contour(Input=Wavelet(WholeExtent=[-40, 40, -40, 40, -40, 40]),
+                    ContourBy=["POINTS", "RTData"],
+                    Isosurfaces=[200.0 + 9.0 * i for i in range(8)]),
+    NO_PRE_PASS, ("DepthPrePass", "Off"), plain_colour=True)
 print("ranks %d, 8 nested contours of the Wavelet (81^3 samples), same lights" % ranks)
 print("%-10s %14s %18s %24s %8s %8s" % ("image", "Surface (ms)", "Phong Surface (ms)",
                                         NO_PRE_PASS + " (ms)", "ratio", "no pre"))

@@ -740,21 +740,36 @@ struct ShellContenders
   std::vector<vtkSmartPointer<vtkPhongPolyDataMapper>> Mappers;
 };
 
-// Nested closed shells: contours 200, 209, ..., 263 of vtkRTAnalyticSource (81^3 samples),
-// appended inner shell first or outer shell first, or the outer shell alone.
+// The field the shells are contours of: vtkRTAnalyticSource, 81^3 samples.
+vtkSmartPointer<vtkRTAnalyticSource> ShellField()
+{
+  auto source = vtkSmartPointer<vtkRTAnalyticSource>::New();
+  source->SetWholeExtent(-40, 40, -40, 40, -40, 40);
+  return source;
+}
+
+// Shell `shell` (0: the outermost) of the nested closed shells: contour 200 + 9 * shell of
+// the field, with normals, and with the contour value as scalars or without scalars.
+vtkSmartPointer<vtkPolyData> Shell(vtkRTAnalyticSource* source, int shell, bool scalars)
+{
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(source->GetOutputPort());
+  contour->SetValue(0, 200.0 + 9.0 * shell);
+  contour->ComputeNormalsOn();
+  contour->SetComputeScalars(scalars);
+  contour->Update();
+  return contour->GetOutput();
+}
+
+// The nested closed shells (contours 200, 209, ..., 263) appended inner shell first or outer
+// shell first, or the outer shell alone.
 vtkSmartPointer<vtkPolyData> Shells(int count, bool innerFirst)
 {
-  vtkNew<vtkRTAnalyticSource> source;
-  source->SetWholeExtent(-40, 40, -40, 40, -40, 40);
+  auto source = ShellField();
   vtkNew<vtkAppendPolyData> append;
   for (int i = 0; i < count; ++i)
   {
-    const int shell = innerFirst ? count - 1 - i : i; // 0: the outermost
-    vtkNew<vtkContourFilter> contour;
-    contour->SetInputConnection(source->GetOutputPort());
-    contour->SetValue(0, 200.0 + 9.0 * shell);
-    contour->ComputeNormalsOn();
-    append->AddInputConnection(contour->GetOutputPort());
+    append->AddInputData(Shell(source, innerFirst ? count - 1 - i : i, true));
   }
   append->Update();
   return append->GetOutput();
@@ -828,18 +843,11 @@ void ShellSection(bool quick)
 // contours (one block mapper holds them all).
 vtkSmartPointer<vtkMultiBlockDataSet> ShellBlocks(int count, bool innerFirst)
 {
+  auto source = ShellField();
   auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
   for (int i = 0; i < count; ++i)
   {
-    vtkNew<vtkRTAnalyticSource> source;
-    source->SetWholeExtent(-40, 40, -40, 40, -40, 40);
-    vtkNew<vtkContourFilter> contour;
-    contour->SetInputConnection(source->GetOutputPort());
-    contour->SetValue(0, 200.0 + 9.0 * (innerFirst ? count - 1 - i : i));
-    contour->ComputeNormalsOn();
-    contour->ComputeScalarsOff();
-    contour->Update();
-    blocks->SetBlock(i, contour->GetOutput());
+    blocks->SetBlock(i, Shell(source, innerFirst ? count - 1 - i : i, false));
   }
   return blocks;
 }

@@ -36,6 +36,8 @@
 #include "vtkSphereSource.h"
 #include "vtkTesting.h"
 #include "vtkTexture.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtk_glew.h"
@@ -101,6 +103,18 @@ inline vtkSmartPointer<vtkPolyData> MakeBandedSphere(double radius = 0.5)
   }
   banded->GetCellData()->SetScalars(bands);
   return banded;
+}
+
+// A copy of the mesh translated by (x, y, z).
+inline vtkSmartPointer<vtkPolyData> Moved(vtkPolyData* mesh, double x, double y, double z)
+{
+  vtkNew<vtkTransform> transform;
+  transform->Translate(x, y, z);
+  vtkNew<vtkTransformPolyDataFilter> move;
+  move->SetInputData(mesh);
+  move->SetTransform(transform);
+  move->Update();
+  return move->GetOutput();
 }
 
 // A square in the z = 0 plane, facing +z, subdivided so per-vertex lighting can resolve it.

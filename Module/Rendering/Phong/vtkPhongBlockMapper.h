@@ -235,7 +235,8 @@ protected:
       triangles += static_cast<double>(block->GetNumberOfPolys() + block->GetNumberOfStrips());
     }
     const bool clustered = everyBlock && parent && parent->GetDepthPrePassOcclusionCulling() &&
-      this->CanCullDepthPass(ren, act, mode);
+      mode != vtkPhongPolyDataMapper::DepthPrePassOff &&
+      vtkPhongVisibleClusters::CanCull(ren, act, this, this->Primitives);
     const double depthTriangles = clustered && this->Clusters.GetNumberOfTriangles() > 0
       ? this->Clusters.CollectVisibility()
       : triangles;
@@ -244,10 +245,7 @@ protected:
       [&](bool depthOnly)
       {
         this->DrawingDepthOnly = depthOnly;
-        if (depthOnly && clustered &&
-          this->Clusters.Update(ren->GetRenderWindow(),
-            this->Primitives[BlockMapper::PrimitiveTris].IBO, this->PointsInBuffer(blocks),
-            this->VBOBuildTime.GetMTime()))
+        if (depthOnly && clustered && this->UpdateClusters(ren, blocks))
         {
           this->DrawingVertices = false;
           this->DrawingSelection = false;
@@ -262,28 +260,19 @@ protected:
       });
   }
 
-  // Triangles alone (the clusters are the triangles'), from the renderer's camera into the
-  // picture's depth buffer, as vtkPhongPolyDataMapper::CanCullDepthPass.
-  bool CanCullDepthPass(vtkRenderer* ren, vtkActor* act, int mode)
+  // The clusters of all the blocks' triangles (vtkPhongVisibleClusters), made again when the
+  // buffer was, from a copy of the blocks' points made for that (not kept).
+  bool UpdateClusters(vtkRenderer* ren, const std::vector<vtkPhongClosedSurface::Block>& blocks)
   {
-    const bool onlyTriangles = this->Primitives[BlockMapper::PrimitiveTris].IBO->IndexCount > 0 &&
-      this->Primitives[BlockMapper::PrimitivePoints].IBO->IndexCount == 0 &&
-      this->Primitives[BlockMapper::PrimitiveLines].IBO->IndexCount == 0 &&
-      this->Primitives[BlockMapper::PrimitiveTriStrips].IBO->IndexCount == 0;
-    return mode != vtkPhongPolyDataMapper::DepthPrePassOff && onlyTriangles &&
-      !ren->GetSelector() && vtkPhongDepthPrePass::CanMeasure(this, act);
-  }
-
-  // The points of the blocks in the vertex buffer's order, kept from one upload to the next
-  // (a copy when the buffer holds several blocks).
-  vtkPolyData* PointsInBuffer(const std::vector<vtkPhongClosedSurface::Block>& blocks)
-  {
-    if (this->BufferPointsTime < this->VBOBuildTime.GetMTime() || !this->BufferPoints)
+    vtkWindow* window = ren->GetRenderWindow();
+    vtkOpenGLIndexBufferObject* triangles = this->Primitives[BlockMapper::PrimitiveTris].IBO;
+    const vtkMTimeType builtAt = this->VBOBuildTime.GetMTime();
+    vtkSmartPointer<vtkPolyData> points;
+    if (!this->Clusters.IsCurrent(window, triangles, builtAt))
     {
-      this->BufferPoints = vtkPhongClosedSurface::PointsOfBlocks(blocks);
-      this->BufferPointsTime = this->VBOBuildTime.GetMTime();
+      points = vtkPhongClosedSurface::PointsOfBlocks(blocks);
     }
-    return this->BufferPoints;
+    return this->Clusters.Update(window, triangles, points, builtAt);
   }
 
   // VTK 9.1 groups blocks by whether they have scalars, not by whether these are point or
@@ -404,8 +393,6 @@ protected:
   bool UsedClosedSurfaceCulling = false;
   vtkPhongDepthPrePass PrePass;
   vtkPhongVisibleClusters Clusters;
-  vtkSmartPointer<vtkPolyData> BufferPoints;
-  vtkMTimeType BufferPointsTime = 0;
   bool UsedDepthPrePass = false;
   bool DrawingDepthOnly = false;
 

@@ -6,6 +6,7 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkPhongClosedSurface.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongShaderPlanner.h"
 #include "vtkProperty.h"
@@ -91,12 +92,7 @@ void vtkPhongDepthPrePass::DrawWithPrePass(
     // closed surface. Culling already on (the actor's own, or the mapper's of a closed
     // surface's hidden faces) applies to both draws.
     const bool alreadyCulling = state->GetEnumState(GL_CULL_FACE);
-    vtkOpenGLState::ScopedglEnableDisable culling(state, GL_CULL_FACE);
-    if (!alreadyCulling)
-    {
-      state->vtkglCullFace(GL_BACK);
-      state->vtkglEnable(GL_CULL_FACE);
-    }
+    vtkPhongClosedSurface::ScopedCulling culling(ren, alreadyCulling ? 0 : GL_BACK);
     draw(true);
   }
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);

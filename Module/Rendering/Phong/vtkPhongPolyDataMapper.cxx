@@ -449,17 +449,10 @@ void vtkPhongPolyDataMapper::DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool
 }
 
 //------------------------------------------------------------------------------
-// Occlusion culling needs the triangles alone (no points, lines or strips drawn in the same
-// pass), drawn as a surface from the renderer's camera (a render pass may draw the actor from
-// a light's view), into the picture's depth buffer (no selection).
 bool vtkPhongPolyDataMapper::CanCullDepthPass(vtkRenderer* ren, vtkActor* act)
 {
-  const bool onlyTriangles = this->Primitives[PrimitiveTris].IBO->IndexCount > 0 &&
-    this->Primitives[PrimitivePoints].IBO->IndexCount == 0 &&
-    this->Primitives[PrimitiveLines].IBO->IndexCount == 0 &&
-    this->Primitives[PrimitiveTriStrips].IBO->IndexCount == 0;
   return this->DepthPrePassOcclusionCulling && this->DepthPrePass != DepthPrePassOff &&
-    onlyTriangles && !ren->GetSelector() && vtkPhongDepthPrePass::CanMeasure(this, act);
+    vtkPhongVisibleClusters::CanCull(ren, act, this, this->Primitives);
 }
 
 //------------------------------------------------------------------------------

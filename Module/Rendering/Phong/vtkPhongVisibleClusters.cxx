@@ -4,7 +4,10 @@
 #include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
+#include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPhongDepthPrePass.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
@@ -45,6 +48,14 @@ double NearestDepth(const vtkBoundingBox& box, const double row[4])
 vtkPhongVisibleClusters::~vtkPhongVisibleClusters() = default; // GL objects die with the context
 
 //------------------------------------------------------------------------------
+bool vtkPhongVisibleClusters::IsCurrent(
+  vtkWindow* window, vtkOpenGLIndexBufferObject* triangles, vtkMTimeType builtAt) const
+{
+  return window == this->Window && builtAt == this->BuiltAt &&
+    triangles->IndexCount == this->IndexCount;
+}
+
+//------------------------------------------------------------------------------
 bool vtkPhongVisibleClusters::Update(vtkWindow* window, vtkOpenGLIndexBufferObject* triangles,
   vtkPolyData* input, vtkMTimeType builtAt)
 {
@@ -53,7 +64,7 @@ bool vtkPhongVisibleClusters::Update(vtkWindow* window, vtkOpenGLIndexBufferObje
     this->Reset(); // a new context: the old one's objects went with it
     this->Window = window;
   }
-  if (builtAt == this->BuiltAt && triangles->IndexCount == this->IndexCount)
+  if (this->IsCurrent(window, triangles, builtAt))
   {
     return !this->Clusters.empty();
   }
@@ -455,4 +466,16 @@ void vtkPhongVisibleClusters::Reset()
   this->IndexCount = 0;
   this->Window = nullptr;
   this->Triangles = this->TrianglesDrawn = 0.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongVisibleClusters::CanCull(
+  vtkRenderer* ren, vtkActor* act, vtkMapper* mapper, const vtkOpenGLHelper* primitives)
+{
+  using Mapper = vtkOpenGLPolyDataMapper;
+  const bool onlyTriangles = primitives[Mapper::PrimitiveTris].IBO->IndexCount > 0 &&
+    primitives[Mapper::PrimitivePoints].IBO->IndexCount == 0 &&
+    primitives[Mapper::PrimitiveLines].IBO->IndexCount == 0 &&
+    primitives[Mapper::PrimitiveTriStrips].IBO->IndexCount == 0;
+  return onlyTriangles && !ren->GetSelector() && vtkPhongDepthPrePass::CanMeasure(mapper, act);
 }

@@ -38,6 +38,8 @@
 #include <vector>  // for std::vector
 
 class vtkActor;
+class vtkMapper;
+class vtkOpenGLHelper;
 class vtkOpenGLIndexBufferObject;
 class vtkPolyData;
 class vtkRenderer;
@@ -50,6 +52,13 @@ public:
   ~vtkPhongVisibleClusters();
   vtkPhongVisibleClusters(const vtkPhongVisibleClusters&) = delete;
   vtkPhongVisibleClusters& operator=(const vtkPhongVisibleClusters&) = delete;
+
+  /**
+   * Whether the clusters were made from the index buffer `triangles` as built at `builtAt`,
+   * in `window`: then Update reads nothing of its `input`.
+   */
+  bool IsCurrent(
+    vtkWindow* window, vtkOpenGLIndexBufferObject* triangles, vtkMTimeType builtAt) const;
 
   /**
    * Make the clusters of the triangles VTK's index buffer `triangles` draws (indices into the
@@ -79,6 +88,16 @@ public:
   ///@}
 
   void ReleaseGraphicsResources(vtkWindow* window);
+
+  /**
+   * Whether a mapper's depth pass may be cut to the clusters: it draws triangles alone (no
+   * points, lines or strips in the same pass; `primitives`: its
+   * vtkOpenGLPolyDataMapper::Primitives), as a surface from the renderer's camera (a render
+   * pass may draw the actor from a light's view: vtkPhongDepthPrePass::CanMeasure), into the
+   * picture's depth buffer (no selection).
+   */
+  static bool CanCull(
+    vtkRenderer* ren, vtkActor* act, vtkMapper* mapper, const vtkOpenGLHelper* primitives);
 
   /**
    * Each triangle's connected component (triangles sharing a point), numbered in order of

@@ -32,8 +32,6 @@
 #include "vtkRTAnalyticSource.h"
 #include "vtkReverseSense.h"
 #include "vtkStripper.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 #include "vtkTriangleFilter.h"
 
 #include <cmath>
@@ -174,17 +172,6 @@ vtkSmartPointer<vtkPolyData> Reversed(vtkPolyData* mesh)
   return reverse->GetOutput();
 }
 
-vtkSmartPointer<vtkPolyData> Moved(vtkPolyData* mesh, double dx)
-{
-  vtkNew<vtkTransform> move;
-  move->Translate(dx, 0.0, 0.0);
-  vtkNew<vtkTransformPolyDataFilter> moved;
-  moved->SetInputData(mesh);
-  moved->SetTransform(move);
-  moved->Update();
-  return moved->GetOutput();
-}
-
 vtkSmartPointer<vtkPolyData> Appended(vtkPolyData* a, vtkPolyData* b)
 {
   vtkNew<vtkAppendPolyData> append;
@@ -288,7 +275,7 @@ void CheckOtherSurfaces(Checks& checks)
 {
   auto sphere = vtkPhongTest::MakeSphere(48);
   CullingScene(OpenSphere()).Compare("open sphere", false, checks);
-  CullingScene(Appended(sphere, Moved(Reversed(sphere), 1.2)))
+  CullingScene(Appended(sphere, vtkPhongTest::Moved(Reversed(sphere), 1.2, 0.0, 0.0)))
     .Compare("a sphere beside a reversed one", false, checks);
   vtkNew<vtkStripper> strips;
   strips->SetInputData(sphere);
@@ -388,7 +375,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> Blocks(std::initializer_list<vtkPolyData*>
 void CheckCompositeBlocks(Checks& checks)
 {
   auto sphere = vtkPhongTest::MakeSphere(48);
-  auto moved = Moved(sphere, 1.3);
+  auto moved = vtkPhongTest::Moved(sphere, 1.3, 0.0, 0.0);
   // Seen side by side, the two spheres' silhouettes graze the view at the window's edges,
   // where a back face wins a pixel's depth test by rounding now and then.
   CullingScene(Blocks({ sphere, moved }))

@@ -10,22 +10,9 @@
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPhongCompositePolyDataMapper.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 namespace
 {
-vtkSmartPointer<vtkPolyData> Moved(vtkPolyData* mesh, double x, double y, double z)
-{
-  vtkNew<vtkTransform> transform;
-  transform->Translate(x, y, z);
-  vtkNew<vtkTransformPolyDataFilter> move;
-  move->SetInputData(mesh);
-  move->SetTransform(transform);
-  move->Update();
-  return move->GetOutput();
-}
-
 // Red to blue along x: point scalars, drawn directly as colours.
 void AddColours(vtkPolyData* mesh)
 {
@@ -64,10 +51,10 @@ int TestPhongCompositePolyDataMapper(int argc, char* argv[])
   auto sphere = vtkPhongTest::MakeSphere(48, 0.35);
   vtkNew<vtkMultiBlockDataSet> blocks;
   blocks->SetNumberOfBlocks(4);
-  blocks->SetBlock(0, Moved(vtkPhongTest::MakePlane(1.3, 40), 0.0, 0.0, -0.45));
-  blocks->SetBlock(1, Moved(sphere, -0.8, 0.0, 0.0));
-  blocks->SetBlock(2, Moved(sphere, 0.0, 0.3, 0.0));
-  auto coloured = Moved(sphere, 0.8, 0.0, 0.0);
+  blocks->SetBlock(0, vtkPhongTest::Moved(vtkPhongTest::MakePlane(1.3, 40), 0.0, 0.0, -0.45));
+  blocks->SetBlock(1, vtkPhongTest::Moved(sphere, -0.8, 0.0, 0.0));
+  blocks->SetBlock(2, vtkPhongTest::Moved(sphere, 0.0, 0.3, 0.0));
+  auto coloured = vtkPhongTest::Moved(sphere, 0.8, 0.0, 0.0);
   AddColours(coloured);
   blocks->SetBlock(3, coloured);
 

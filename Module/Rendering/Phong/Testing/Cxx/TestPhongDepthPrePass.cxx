@@ -23,8 +23,6 @@
 #include "vtkRTAnalyticSource.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "vtkPhongDepthPrePass.h"
@@ -243,12 +241,7 @@ vtkSmartPointer<vtkPolyData> SpheresInLine()
   for (int k = 0; k < 2; ++k)
   {
     auto sphere = vtkPhongTest::MakeSphere(100, k == 0 ? 10.0 : 6.0);
-    vtkNew<vtkTransform> shift;
-    shift->Translate(0.0, 0.0, k == 0 ? 12.0 : -12.0);
-    vtkNew<vtkTransformPolyDataFilter> move;
-    move->SetInputData(sphere);
-    move->SetTransform(shift);
-    append->AddInputConnection(move->GetOutputPort());
+    append->AddInputData(vtkPhongTest::Moved(sphere, 0.0, 0.0, k == 0 ? 12.0 : -12.0));
   }
   append->Update();
   return append->GetOutput();
@@ -346,13 +339,7 @@ vtkSmartPointer<vtkPolyData> SphereWithScalars(double radius, double z)
   values->SetNumberOfTuples(sphere->GetNumberOfPoints());
   values->Fill(230.0);
   sphere->GetPointData()->SetScalars(values);
-  vtkNew<vtkTransform> move;
-  move->Translate(0.0, 0.0, z);
-  vtkNew<vtkTransformPolyDataFilter> moved;
-  moved->SetInputData(sphere);
-  moved->SetTransform(move);
-  moved->Update();
-  return moved->GetOutput();
+  return vtkPhongTest::Moved(sphere, 0.0, 0.0, z);
 }
 
 // The composite mapper (ParaView's Phong Surface) draws each helper's blocks with the
