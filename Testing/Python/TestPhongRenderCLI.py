@@ -376,6 +376,59 @@ result = run(good, "-o", out, environment=environment)
 checks.expect(result.returncode == 1 and "X display" in result.stderr,
               "no display: one error line (%r)" % result.stderr)
 
+
+
+def unused_display():
+    """A display number no X server listens on."""
+    number = 1999
+    while any(os.path.exists(name % number) for name in ("/tmp/.X11-unix/X%d", "/tmp/.X%d-lock")):
+        number += 1
+    return ":%d" % number
+
+
+# An X server that refuses the connection: VTK 9.1 would abort the renderer; the command
+# tries again for a few seconds, then says so in one line.
+environment = dict(os.environ, DISPLAY=unused_display())
+result = run(good, "-o", out, environment=environment)
+checks.expect(result.returncode == 1 and result.stderr.count("\n") == 1
+              and "cannot connect to the X display " + environment["DISPLAY"] in result.stderr,
+              "a display that refuses: one error line (%r)" % result.stderr)
+
+# An X server that starts while the command tries (as one busy server accepts late): it
+# renders.
+display = unused_display()
+command = subprocess.Popen([args.cli, good, "-o", path("late-display.png"), "--quiet"],
+                           env=dict(os.environ, DISPLAY=display),
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+time.sleep(1.0)
+server = subprocess.Popen(["Xvfb", display, "-screen", "0", "640x480x24", "-nolisten", "tcp"],
+                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+try:
+    stdout, stderr = command.communicate(timeout=120)
+finally:
+    server.terminate()
+    server.wait(timeout=30)
+checks.expect(command.returncode == 0 and len(covered(pixels(read(path("late-display.png"))))) > 0,
+              "a display that accepts late: rendered (status %d, %r)"
+              % (command.returncode, stderr))
+
+# When VTK itself aborts the renderer (here: no connection made by the command first, and a
+# display that refuses), the error line carries what VTK said before it died.
+package = os.path.normpath(os.path.join(os.path.dirname(os.path.realpath(args.cli)),
+                                        "../lib/python3/dist-packages"))
+script = ("import sys, vtkphong._rendering as rendering\n"
+          "rendering._libx11 = lambda: None\n"
+          "from vtkphong.render import main\n"
+          "sys.exit(main(sys.argv[1:], isolated=True))\n")
+python_path = package + os.pathsep + os.environ.get("PYTHONPATH", "")
+result = subprocess.run(["/usr/bin/python3", "-c", script, good, "-o", out],
+                        capture_output=True, timeout=300, text=True,
+                        env=dict(os.environ, DISPLAY=unused_display(), PYTHONPATH=python_path))
+checks.expect(result.returncode == 1 and result.stderr.count("\n") == 1
+              and "the renderer crashed (SIGABRT)" in result.stderr
+              and "after VTK's error: bad X server connection" in result.stderr,
+              "VTK's abort: one error line with VTK's reason (%r)" % result.stderr)
+
 result = run(path("missing-mtl.obj"), "-o", path("missing-mtl.png"), "--quiet")
 checks.expect(result.returncode == 0 and result.stderr.startswith("vtkphong-render: warning: ")
               and "nowhere.mtl" in result.stderr and result.stderr.count("\n") == 1,

@@ -7,9 +7,15 @@ keeps the unclamped values; a .png clamps them as it is written.
 
 import math
 import os
+import sys
+import time
 
 from vtkphong._errors import RenderError
 from vtkphong._scene import STUDIO_RIG
+
+# How long to keep trying to connect to the X server: under xvfb-run, one server takes the
+# connections of every render running at once, and may refuse one for a moment.
+DISPLAY_ATTEMPT_DELAYS = (0.05, 0.1, 0.2, 0.4, 0.8, 1.0, 1.0, 1.0, 1.0)
 
 OUTPUTS = {
     ".png": "8-bit RGB (RGBA with --transparent), clamped to [0, 1]",
@@ -19,10 +25,19 @@ OUTPUTS = {
 
 def render(parts, settings, progress):
     """The float RGBA image of the parts (a vtkImageData)."""
+    display = XDisplay.open()
+    try:
+        return _render_on(display, parts, settings, progress)
+    finally:
+        display.close()
+
+
+def _render_on(display, parts, settings, progress):
     import vtkphong
     from vtkmodules.vtkCommonDataModel import vtkImageData
 
     window, renderer = _make_window(settings)
+    display.give_to(window)
     for part in parts:
         renderer.AddActor(_actor_for(part, settings, progress))
     _place_camera(renderer, settings["camera"])
@@ -38,6 +53,58 @@ def render(parts, settings, progress):
     image.DeepCopy(float_pass.GetFloatImage())
     window.Finalize()
     return image
+
+
+class XDisplay:
+    """The X server connection the window renders on, opened here rather than by VTK.
+
+    VTK 9.1's X11 window aborts the process when it cannot connect, before it says why
+    anywhere the command shows. Here a refused connection is tried again for a few
+    seconds, and then it is a RenderError naming the display. Off X11 (another window
+    class, no libX11) there is nothing to open and VTK connects as it does."""
+
+    def __init__(self, library=None, pointer=None):
+        self._library = library
+        self._pointer = pointer
+
+    @classmethod
+    def open(cls, delays=DISPLAY_ATTEMPT_DELAYS):
+        library = _libx11()
+        if library is None:
+            return cls()
+        for delay in delays + (None,):
+            pointer = library.XOpenDisplay(None)
+            if pointer:
+                return cls(library, pointer)
+            if delay is not None:
+                time.sleep(delay)
+        raise RenderError("cannot connect to the X display %s (refused for %g s)"
+                          % (os.environ.get("DISPLAY", "(DISPLAY not set)"), sum(delays)))
+
+    def give_to(self, window):
+        if self._pointer and window.GetClassName() == "vtkXOpenGLRenderWindow":
+            window.SetDisplayId("_%x_p_void" % self._pointer)
+
+    def close(self):
+        """After the window is finalized (VTK leaves a display it was given open)."""
+        if self._pointer:
+            self._library.XCloseDisplay(self._pointer)
+            self._pointer = None
+
+
+def _libx11():
+    """libX11 through ctypes, or None where the platform has none."""
+    if not sys.platform.startswith("linux"):
+        return None
+    import ctypes
+    try:
+        library = ctypes.CDLL("libX11.so.6")
+    except OSError:
+        return None
+    library.XOpenDisplay.restype = ctypes.c_void_p
+    library.XOpenDisplay.argtypes = [ctypes.c_char_p]
+    library.XCloseDisplay.argtypes = [ctypes.c_void_p]
+    return library
 
 
 def write_image(image, path, settings):

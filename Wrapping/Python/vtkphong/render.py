@@ -295,14 +295,67 @@ class Progress:
             self.shown = False
 
 
-def _vtk_messages():
-    """Collect VTK's warnings and errors instead of printing them: the command
-    prints one line of its own."""
-    from vtkmodules.vtkCommonCore import vtkLogger, vtkOutputWindow, vtkStringOutputWindow
-    collector = vtkStringOutputWindow()
-    vtkOutputWindow.SetInstance(collector)
-    vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
-    return collector
+class _MessageLog:
+    """VTK's warnings and errors, kept instead of printed (the command prints one line of
+    its own). They go to a file as they come, so that a renderer killed by a signal (VTK
+    aborts on some failures) still leaves what VTK said before it; the file is the
+    parent's when the command runs isolated, and is removed by whoever made it."""
+
+    def __init__(self, path=None):
+        from vtkmodules.vtkCommonCore import vtkFileOutputWindow, vtkLogger, vtkOutputWindow
+        self.owned = path is None
+        self.path = path or _new_message_file()
+        self.window = vtkFileOutputWindow()
+        self.window.SetFileName(self.path)
+        self.window.FlushOn()
+        vtkOutputWindow.SetInstance(self.window)
+        vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+
+    def GetOutput(self):
+        return _read_messages(self.path)
+
+    def close(self):
+        from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
+        vtkOutputWindow.SetInstance(vtkStringOutputWindow())  # closes the file
+        if self.owned:
+            _remove(self.path)
+
+
+class _MessageFile:
+    """What a message file holds, for _first_vtk_error."""
+
+    def __init__(self, path):
+        self.path = path
+
+    def GetOutput(self):
+        return _read_messages(self.path)
+
+
+def _new_message_file():
+    import tempfile
+    handle, path = tempfile.mkstemp(prefix="vtkphong-render-", suffix=".log")
+    os.close(handle)
+    return path
+
+
+def _read_messages(path):
+    try:
+        with open(path, "rb") as stream:
+            return stream.read()
+    except OSError:
+        return b""
+
+
+def _remove(path):
+    try:
+        os.remove(path)
+    except OSError:
+        pass
+
+
+# The isolated command's message file: made by the parent before the fork, written by the
+# child, read by the parent if the child dies of a signal.
+_ISOLATED_MESSAGE_FILE = None
 
 
 def _first_vtk_error(collector):
@@ -311,6 +364,7 @@ def _first_vtk_error(collector):
     if isinstance(text, bytes):
         text = text.decode("utf-8", "replace")
     for block in text.split("\n\n"):
+        block = block.strip("\n")
         if "ERROR" in block or "Warning" in block:
             # "ERROR: In file, line N\nvtkClass (0x...): message, maybe on several lines"
             message = " ".join(block.split("\n")[1:]) if "\n" in block else block
@@ -337,7 +391,14 @@ def run(arguments):
     if sys.platform.startswith("linux") and not os.environ.get("DISPLAY"):
         raise RenderError("no X display to render with: run under xvfb-run -a")
 
-    collector = _vtk_messages()
+    collector = _MessageLog(_ISOLATED_MESSAGE_FILE)
+    try:
+        _render_and_write(options, settings, collector)
+    finally:
+        collector.close()
+
+
+def _render_and_write(options, settings, collector):
     progress = Progress(_is_big(options.mesh) and not options.quiet)
     parts = _read_parts(options.mesh, progress, collector)
     image = render(parts, settings, progress)
@@ -420,8 +481,19 @@ def _main_in_child(arguments):
 
     The file is already read in a child of its own (_meshio); this one contains what comes
     after: VTK's pipeline, the OpenGL driver, the image writer."""
+    global _ISOLATED_MESSAGE_FILE
     sys.stdout.flush()
     sys.stderr.flush()
+    _ISOLATED_MESSAGE_FILE = _new_message_file()
+    try:
+        return _wait_for_child(arguments, _ISOLATED_MESSAGE_FILE)
+    finally:
+        _remove(_ISOLATED_MESSAGE_FILE)
+        _ISOLATED_MESSAGE_FILE = None
+
+
+def _wait_for_child(arguments, message_file):
+    """Fork, run main in the child, and turn its end into a status."""
     child = os.fork()
     if child == 0:
         status = 1
@@ -441,8 +513,10 @@ def _main_in_child(arguments):
             continue  # the terminal's SIGINT reached the child too; it says "interrupted"
     if os.WIFSIGNALED(wait_status):
         number = os.WTERMSIG(wait_status)
-        print("%s: error: the renderer crashed (%s) on %s; please report it with the file"
-              % (PROGRAM, _signal_name(number), _mesh_argument(arguments)), file=sys.stderr)
+        said = _first_vtk_error(_MessageFile(message_file))
+        print("%s: error: the renderer crashed (%s) on %s%s; please report it with the file"
+              % (PROGRAM, _signal_name(number), _mesh_argument(arguments),
+                 ", after VTK's error: " + said.rstrip(".") if said else ""), file=sys.stderr)
         return 1
     return os.WEXITSTATUS(wait_status)
 
