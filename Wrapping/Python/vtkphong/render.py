@@ -321,16 +321,6 @@ class _MessageLog:
             _remove(self.path)
 
 
-class _MessageFile:
-    """What a message file holds, for _first_vtk_error."""
-
-    def __init__(self, path):
-        self.path = path
-
-    def GetOutput(self):
-        return _read_messages(self.path)
-
-
 def _new_message_file():
     import tempfile
     handle, path = tempfile.mkstemp(prefix="vtkphong-render-", suffix=".log")
@@ -360,7 +350,12 @@ _ISOLATED_MESSAGE_FILE = None
 
 def _first_vtk_error(collector):
     """The first VTK error message collected, on one printable line, or ''."""
-    text = collector.GetOutput()
+    return _first_error_in(collector.GetOutput())
+
+
+def _first_error_in(text):
+    """The first VTK error message in text (what VTK's output window wrote), on one
+    printable line, or ''."""
     if isinstance(text, bytes):
         text = text.decode("utf-8", "replace")
     for block in text.split("\n\n"):
@@ -513,7 +508,7 @@ def _wait_for_child(arguments, message_file):
             continue  # the terminal's SIGINT reached the child too; it says "interrupted"
     if os.WIFSIGNALED(wait_status):
         number = os.WTERMSIG(wait_status)
-        said = _first_vtk_error(_MessageFile(message_file))
+        said = _first_error_in(_read_messages(message_file))
         print("%s: error: the renderer crashed (%s) on %s%s; please report it with the file"
               % (PROGRAM, _signal_name(number), _mesh_argument(arguments),
                  ", after VTK's error: " + said.rstrip(".") if said else ""), file=sys.stderr)
