@@ -101,6 +101,7 @@ protected:
       act->GetShaderProperty()->HasGeometryShaderCode();
     state.DrawingVertices = this->DrawingVertices;
     state.DrawingSelection = this->DrawingSelection;
+    state.HasUserShaderCode = vtkPhongClosedSurface::HasShaderCode(act, this->LegacyShaders());
 
     if (auto* parent = vtkPhongCompositePolyDataMapper::SafeDownCast(this->Parent))
     {
@@ -307,16 +308,11 @@ protected:
     {
       return 0;
     }
-#if VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS
-    vtkShaderProperty* legacyShaders = this->LegacyShaderProperty;
-#else
-    vtkShaderProperty* legacyShaders = nullptr;
-#endif
     const int clippingPlanes =
       this->GetNumberOfClippingPlanes() + parent->GetNumberOfClippingPlanes();
     vtkSelection* selection = parent->GetSelection();
     if (!vtkPhongClosedSurface::DrawsOnlySurfaces(
-          ren, act, this->Primitives, legacyShaders, clippingPlanes) ||
+          ren, act, this->Primitives, this->LegacyShaders(), clippingPlanes) ||
       (selection && selection->GetNumberOfNodes() > 0))
     {
       return 0;
@@ -397,6 +393,16 @@ protected:
   bool DrawingDepthOnly = false;
 
 private:
+  // The mapper's own shader replacements (VTK before 9.2), or nullptr.
+  vtkShaderProperty* LegacyShaders() const
+  {
+#if VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS
+    return this->LegacyShaderProperty;
+#else
+    return nullptr;
+#endif
+  }
+
   vtkPhongBlockMapper(const vtkPhongBlockMapper&) = delete;
   void operator=(const vtkPhongBlockMapper&) = delete;
 };

@@ -115,6 +115,11 @@ public:
     vtkShaderProperty* legacyShaders, int clippingPlanes);
 
   /**
+   * Whether the actor's shader property, or `legacyShaders` (the mapper's own replacements
+   * before VTK 9.2), holds shader code or replacements of the user's.
+   */
+  static bool HasShaderCode(vtkActor* act, vtkShaderProperty* legacyShaders);
+  /**
    * Culls `faces` (GL_BACK or GL_FRONT; 0: nothing) for as long as it lives, then restores the
    * window's culling state.
    */
@@ -135,7 +140,6 @@ public:
 private:
   void Analyse(std::vector<unsigned int>& indices, vtkPolyData* input);
   static bool HasConcavePolygons(vtkPolyData* input);
-  static bool HasShaderCode(vtkActor* act, vtkShaderProperty* legacyShaders);
   static std::vector<vtkIdType> WeldPoints(vtkPolyData* input);
   static bool WeldTriangles(
     std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded);

@@ -205,6 +205,7 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
     act->GetShaderProperty()->HasGeometryShaderCode();
   state.DrawingVertices = this->DrawingVertices;
   state.DrawingSelection = this->DrawingSelection;
+  state.HasUserShaderCode = vtkPhongClosedSurface::HasShaderCode(act, this->LegacyShaders());
 
   core->Options.DebugView = this->DebugView;
   core->Options.DebugLightIndex = this->DebugLightIndex;
@@ -370,19 +371,25 @@ void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
+// The mapper's own shader replacements (VTK before 9.2), or nullptr.
+vtkShaderProperty* vtkPhongPolyDataMapper::LegacyShaders() const
+{
+#if VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS
+  return this->LegacyShaderProperty;
+#else
+  return nullptr;
+#endif
+}
+
+//------------------------------------------------------------------------------
 // The faces to cull, or 0: nothing drawn may show a back face other than through the closed
 // surfaces (a shader replacement, a clipping plane's cut, a texture's transparent texel, an
 // edge over a silhouette could), then the surfaces and the view (vtkPhongClosedSurface).
 unsigned int vtkPhongPolyDataMapper::HiddenFaces(vtkRenderer* ren, vtkActor* act)
 {
-#if VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS
-  vtkShaderProperty* legacyShaders = this->LegacyShaderProperty;
-#else
-  vtkShaderProperty* legacyShaders = nullptr;
-#endif
   if (!this->ClosedSurfaceCulling || !this->CurrentInput ||
     !vtkPhongClosedSurface::DrawsOnlySurfaces(
-      ren, act, this->Primitives, legacyShaders, this->GetNumberOfClippingPlanes()))
+      ren, act, this->Primitives, this->LegacyShaders(), this->GetNumberOfClippingPlanes()))
   {
     return 0;
   }

@@ -41,6 +41,8 @@
 #include <map>    // for std::map
 #include <memory> // for std::unique_ptr
 
+class vtkShaderProperty;
+
 class VTKRENDERINGPHONG_EXPORT vtkPhongPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
 public:
@@ -352,6 +354,7 @@ private:
   unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act);
   bool CanCullDepthPass(vtkRenderer* ren, vtkActor* act);
   void DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool culled);
+  vtkShaderProperty* LegacyShaders() const;
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

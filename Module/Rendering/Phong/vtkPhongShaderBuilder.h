@@ -70,9 +70,10 @@ public:
     bool NormalsMayBeInvalid = false; ///< the normals array holds zero, NaN or Inf vectors
     bool NormalsFromShape = false;    ///< points drawn as spheres or lines as tubes
     bool HasGeometryShader = false;
-    bool DrawingEdges = false;     ///< surface with edges: VTK's edge colour is ambientColor
-    bool DrawingVertices = false;  ///< the vertex-visibility pass
-    bool DrawingSelection = false; ///< the selection-highlight pass
+    bool HasUserShaderCode = false; ///< the actor's or mapper's shader code or replacements
+    bool DrawingEdges = false;      ///< surface with edges: VTK's edge colour is ambientColor
+    bool DrawingVertices = false;   ///< the vertex-visibility pass
+    bool DrawingSelection = false;  ///< the selection-highlight pass
   };
 
   /**

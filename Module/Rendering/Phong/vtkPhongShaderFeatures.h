@@ -38,6 +38,8 @@ enum class vtkPhongFeature : unsigned char
   Directional,
   Emission,
   GeometryPassThrough,
+  InterpolatedDots, ///< directional lights' N.L and L.V from dot products interpolated from the
+                    ///< vertices
   LightSums,
   LobeBlinn,
   LobePhong,

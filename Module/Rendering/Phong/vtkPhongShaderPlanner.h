@@ -79,6 +79,7 @@ private:
     bool geometryView, vtkRenderer* ren, Plan& plan);
   static void SetNormalFeatures(
     const Terms& terms, const PrimitiveState& state, bool perVertex, bool allFeatures, Plan& plan);
+  static void SetInterpolatedDotsFeature(const PrimitiveState& state, bool allFeatures, Plan& plan);
   static std::string MakeSignature(const Plan& plan, bool allFeatures);
 
   PlaceholderLights Placeholders;

@@ -248,6 +248,7 @@ void vtkPhongShaderTemplate::FillPlaceholders(
     { "@DIRECTIONAL_COUNT@", plan.DirectionalLights.size() },
     { "@POINT_COUNT@", plan.PointLights.size() },
     { "@SPOT_COUNT@", plan.SpotLights.size() },
+    { "@DIRECTIONAL_VEC4_COUNT@", (plan.DirectionalLights.size() + 3) / 4 },
     { "@SHADOW_FACTOR_COUNT@", static_cast<std::size_t>(plan.ShadowFactorCount) },
   };
   for (const auto& placeholder : placeholders)
@@ -286,6 +287,10 @@ void vtkPhongShaderTemplate::Substitute(
     vtkPhongShadowMaps::CountFactors(shaders[vtkShader::Fragment]->GetSource());
   plan.Features.Set(
     Feature::ShadowMaps, plan.ShadowFactorCount > 0 && plan.Has(Feature::SumsPerFragment));
+  if (plan.Has(Feature::InterpolatedDots) && !ShadesWithVertexNormal(shaders))
+  {
+    plan.Features.Set(Feature::InterpolatedDots, false);
+  }
   DeclareInvariantPosition(shaders);
   const bool perVertex = plan.Has(Feature::SumsPerVertex);
   const std::string sums = this->Resolve(vtkPhongLightingLib, "Sums", plan);
@@ -296,6 +301,42 @@ void vtkPhongShaderTemplate::Substitute(
   {
     this->SubstitutePerVertex(shaders, sums, lights, plan);
   }
+  if (plan.Has(Feature::InterpolatedDots))
+  {
+    this->SubstituteVertexDots(shaders[vtkShader::Vertex], plan);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Whether the fragment's normal is VTK's vertex normal, interpolated, normalized and flipped
+// on back faces, and nothing else (INTERPOLATED_DOTS relies on it): VTK's own normal code,
+// each variable assigned only there, and no geometry shader in between.
+bool vtkPhongShaderTemplate::ShadesWithVertexNormal(std::map<vtkShader::Type, vtkShader*>& shaders)
+{
+  vtkShader* geometry = shaders[vtkShader::Geometry];
+  if (geometry && !geometry->GetSource().empty())
+  {
+    return false;
+  }
+  const std::string vertex = shaders[vtkShader::Vertex]->GetSource();
+  const std::string fragment = shaders[vtkShader::Fragment]->GetSource();
+  return CountAssignments(vertex, "normalVCVSOutput") == 1 &&
+    vertex.find("normalVCVSOutput = normalMatrix * normalMC;") != std::string::npos &&
+    CountAssignments(fragment, "normalVCVSOutput") == 2 &&
+    fragment.find("vec3 normalVCVSOutput = normalize(normalVCVSOutput);") != std::string::npos &&
+    fragment.find("if (gl_FrontFacing == false) { normalVCVSOutput = -normalVCVSOutput; }") !=
+    std::string::npos;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongShaderTemplate::SubstituteVertexDots(vtkShader* vertexShader, const Plan& plan) const
+{
+  std::string vertex = vertexShader->GetSource();
+  vtkShaderProgram::Substitute(vertex, "//VTK::Light::Dec",
+    this->Resolve(vtkPhongVS, "DotsDec", plan) + "//VTK::Light::Dec", false);
+  vtkShaderProgram::Substitute(vertex, "//VTK::Light::Impl",
+    this->Resolve(vtkPhongVS, "DotsImpl", plan) + "  //VTK::Light::Impl", false);
+  vertexShader->SetSource(vertex);
 }
 
 //------------------------------------------------------------------------------

@@ -74,6 +74,8 @@ private:
     const std::string& lights, const Plan& plan) const;
   void SubstitutePerVertex(std::map<vtkShader::Type, vtkShader*>& shaders, const std::string& sums,
     const std::string& lights, const Plan& plan) const;
+  static bool ShadesWithVertexNormal(std::map<vtkShader::Type, vtkShader*>& shaders);
+  void SubstituteVertexDots(vtkShader* vertexShader, const Plan& plan) const;
 
   vtkObject* Reporter;
 };

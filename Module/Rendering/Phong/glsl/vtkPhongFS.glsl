@@ -57,6 +57,10 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_ENDIF
 
 //PHONG_SECTION UniformFlow
+//PHONG_IF INTERPOLATED_DOTS
+  // The normal as interpolated, before VTK's normal code makes it unit length.
+  vec3 phongInterpolatedNormalVC = normalVCVSOutput;
+//PHONG_ENDIF
 //PHONG_IF NORMAL_FALLBACK
   // The face's geometric normal, for fragments whose normal is zero or NaN.
   // Derivatives need uniform control flow, so it is computed for every fragment.
@@ -78,9 +82,15 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_IF SHADING_NORMAL
   vec3 phongNormalVC = normalVCVSOutput;
 //PHONG_IF !NORMAL_FALLBACK
+//PHONG_IF INTERPOLATED_DOTS
+  bool phongNormalIsView = false;
+//PHONG_ENDIF
   if (!(dot(phongNormalVC, phongNormalVC) > 0.5)) // interpolated normals that cancel out
   {
     phongNormalVC = phongViewVC;
+//PHONG_IF INTERPOLATED_DOTS
+    phongNormalIsView = true;
+//PHONG_ENDIF
   }
 //PHONG_ENDIF
 //PHONG_IF NORMAL_FALLBACK
@@ -104,6 +114,16 @@ in vec3 phongSpecularLightBFVSOutput;
   {
     phongNormalVC = -phongNormalVC;
   }
+//PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF INTERPOLATED_DOTS
+  // The shading normal as a multiple of the interpolated normal (VTK's normalization and
+  // sides' flips), or of the view vector (vtkPhongLightingLib.glsl).
+  phongInterpolatedNormalScale = phongNormalIsView ? 0.0
+    : dot(phongNormalVC, phongInterpolatedNormalVC) / dot(phongInterpolatedNormalVC, phongInterpolatedNormalVC);
+  phongViewWeight = phongNormalIsView ? dot(phongNormalVC, phongViewVC) : 0.0;
+//PHONG_IF !PARALLEL
+  phongMinusInverseDistance = -inversesqrt(dot(vertexVC.xyz, vertexVC.xyz));
 //PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SUMS_PER_FRAGMENT

@@ -48,6 +48,26 @@ uniform vec3 phongDirectionalLightSpecular[@DIRECTIONAL_COUNT@]; // Ls_i*I_i
 //PHONG_ENDIF
 //PHONG_ENDIF
 
+//PHONG_IF INTERPOLATED_DOTS
+// The dot products of the directional lights that are linear in what the rasterizer
+// interpolates, evaluated at the vertices (vtkPhongVS.glsl, Dots): n.L_i, with n the normal
+// before normalization, and P.L_i, with P the position in view coordinates. Interpolated
+// with the same weights as n and P, they are n.L_i and P.L_i at the fragment, so
+// N.L_i = s * n.L_i (N = s*n) and L_i.V = -P.L_i / |P| without the directions' uniform reads
+// and dot products per fragment. Four lights per vec4.
+in vec4 phongDirectionalNormalDotLVSOutput[@DIRECTIONAL_VEC4_COUNT@];
+//PHONG_IF !PARALLEL
+in vec4 phongDirectionalPositionDotLVSOutput[@DIRECTIONAL_VEC4_COUNT@];
+//PHONG_ENDIF
+// Set by the fragment's main (vtkPhongFS.glsl) once the shading normal N is known:
+// N = phongInterpolatedNormalScale * n + phongViewWeight * V, one of the two weights 0.
+float phongInterpolatedNormalScale;
+float phongViewWeight;
+//PHONG_IF !PARALLEL
+float phongMinusInverseDistance; // -1/|P|
+//PHONG_ENDIF
+//PHONG_ENDIF
+
 //PHONG_IF POINT
 const int phongPointLightCount = @POINT_COUNT@;
 uniform vec3 phongPointLightPositionVC[@POINT_COUNT@];
@@ -128,23 +148,12 @@ vec3 phongToPositionalLight(vec3 lightPositionVC, vec3 positionVC, vec3 N, out f
 //PHONG_ENDIF
 
 //PHONG_IF SPECULAR
-// S_i*G_i for one light: the lobe, gated off for a light behind the surface.
-// NdotL is N.L before clamping. Shininess 0 gives a lobe of 1 wherever the gate
+// S_i*G_i for one light from the cosine of its lobe: the lobe, gated off for a light behind
+// the surface. NdotL is N.L before clamping. Shininess 0 gives a lobe of 1 wherever the gate
 // is open, which GLSL's pow(0, 0) leaves undefined.
-float phongSpecular(vec3 N, vec3 L, vec3 V, float NdotL, float shininess)
+float phongGatedLobe(float cosine, float NdotL, float shininess)
 {
-//PHONG_IF LOBE_PHONG
-  // R = reflect(-L, N) = 2(N.L)N - L
-  float cosine = clamp(dot(2.0 * NdotL * N - L, V), 0.0, 1.0);
-  float lobe = shininess > 0.0 ? pow(cosine, shininess) : 1.0;
-//PHONG_ENDIF
-//PHONG_IF LOBE_BLINN
-  // H = normalize(L + V); L = -V has no halfway vector and no highlight.
-  vec3 halfway = L + V;
-  float halfwayLength = length(halfway);
-  float cosine = halfwayLength > 0.0 ? clamp(dot(N, halfway) / halfwayLength, 0.0, 1.0) : 0.0;
-  float lobe = halfwayLength > 0.0 ? (shininess > 0.0 ? pow(cosine, shininess) : 1.0) : 0.0;
-//PHONG_ENDIF
+  float lobe = shininess > 0.0 ? pow(clamp(cosine, 0.0, 1.0), shininess) : 1.0;
 //PHONG_IF SMOOTH_TERMINATOR
   return lobe * max(NdotL, 0.0);
 //PHONG_ENDIF
@@ -155,6 +164,29 @@ float phongSpecular(vec3 N, vec3 L, vec3 V, float NdotL, float shininess)
   return NdotL > 1.0e-4 ? lobe : 0.0;
 //PHONG_ENDIF
 }
+
+// S_i*G_i for one light with unit vectors N, L (to the light) and V (to the eye).
+float phongSpecular(vec3 N, vec3 L, vec3 V, float NdotL, float shininess)
+{
+//PHONG_IF LOBE_PHONG
+  // R = reflect(-L, N) = 2(N.L)N - L
+  return phongGatedLobe(dot(2.0 * NdotL * N - L, V), NdotL, shininess);
+//PHONG_ENDIF
+//PHONG_IF LOBE_BLINN
+  // H = normalize(L + V); L = -V has no halfway vector and no highlight.
+  vec3 halfway = L + V;
+  float halfwayLength = length(halfway);
+  return halfwayLength > 0.0 ? phongGatedLobe(dot(N, halfway) / halfwayLength, NdotL, shininess) : 0.0;
+//PHONG_ENDIF
+}
+//PHONG_IF INTERPOLATED_DOTS
+
+// The same Phong lobe from dot products alone: R.V = 2(N.L)(N.V) - L.V.
+float phongSpecularFromDots(float NdotL, float twoNdotV, float LdotV, float shininess)
+{
+  return phongGatedLobe(NdotL * twoNdotV - LdotV, NdotL, shininess);
+}
+//PHONG_ENDIF
 //PHONG_ENDIF
 
 //PHONG_IF LIGHT_SUMS
@@ -174,35 +206,48 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
 //PHONG_ENDIF
 
 //PHONG_IF DIRECTIONAL
+//PHONG_IF INTERPOLATED_DOTS
+//PHONG_IF SPECULAR
+  float twoNdotV = 2.0 * dot(N, V);
+//PHONG_ENDIF
+//PHONG_ENDIF
   for (int i = 0; i < @DIRECTIONAL_COUNT@; ++i) // unrolled up to 64 lights (vtkPhongShaderTemplate)
   {
+//PHONG_IF !INTERPOLATED_DOTS
     vec3 L = phongDirectionalLightToLightVC[i];
     float NdotL = dot(N, L);
-//PHONG_IF !SHADOW_MAPS
-//PHONG_IF DIFFUSE
-    sums.diffuse += phongDirectionalLightDiffuse[i] * max(NdotL, 0.0);
 //PHONG_ENDIF
-//PHONG_IF SPECULAR
-//PHONG_IF SEPARATE_SPECULAR_COLORS
-    sums.specular += phongDirectionalLightSpecular[i] * phongSpecular(N, L, V, NdotL, shininess);
+//PHONG_IF INTERPOLATED_DOTS
+//PHONG_IF PARALLEL
+    float LdotV = phongDirectionalLightToLightVC[i].z;
 //PHONG_ENDIF
-//PHONG_IF !SEPARATE_SPECULAR_COLORS
-    sums.specular += phongDirectionalLightDiffuse[i] * phongSpecular(N, L, V, NdotL, shininess);
+//PHONG_IF !PARALLEL
+    float LdotV = phongDirectionalPositionDotLVSOutput[i / 4][i % 4] * phongMinusInverseDistance;
 //PHONG_ENDIF
-//PHONG_ENDIF
+    float NdotL = phongDirectionalNormalDotLVSOutput[i / 4][i % 4] * phongInterpolatedNormalScale +
+      phongViewWeight * LdotV;
 //PHONG_ENDIF
 //PHONG_IF SHADOW_MAPS
     float shadow = phongShadowFactors[phongDirectionalLightShadow[i]];
+//PHONG_ENDIF
+//PHONG_IF !SHADOW_MAPS
+    const float shadow = 1.0;
+//PHONG_ENDIF
 //PHONG_IF DIFFUSE
     sums.diffuse += phongDirectionalLightDiffuse[i] * (shadow * max(NdotL, 0.0));
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
+//PHONG_IF !INTERPOLATED_DOTS
+    float specular = shadow * phongSpecular(N, L, V, NdotL, shininess);
+//PHONG_ENDIF
+//PHONG_IF INTERPOLATED_DOTS
+    float specular = shadow * phongSpecularFromDots(NdotL, twoNdotV, LdotV, shininess);
+//PHONG_ENDIF
 //PHONG_IF SEPARATE_SPECULAR_COLORS
-    sums.specular += phongDirectionalLightSpecular[i] * (shadow * phongSpecular(N, L, V, NdotL, shininess));
+    sums.specular += phongDirectionalLightSpecular[i] * specular;
 //PHONG_ENDIF
 //PHONG_IF !SEPARATE_SPECULAR_COLORS
-    sums.specular += phongDirectionalLightDiffuse[i] * (shadow * phongSpecular(N, L, V, NdotL, shininess));
-//PHONG_ENDIF
+    sums.specular += phongDirectionalLightDiffuse[i] * specular;
 //PHONG_ENDIF
 //PHONG_ENDIF
   }

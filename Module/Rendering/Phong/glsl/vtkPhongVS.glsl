@@ -4,6 +4,10 @@
 // at VTK's polydata vertex shader tags by vtkPhongShaderBuilder (same
 // //PHONG_IF template rules as vtkPhongLightingLib.glsl). VTK's Normal::Impl
 // and PositionVC::Impl have set normalVCVSOutput and vertexVCVSOutput.
+//
+// The sections Dots* are for per-fragment lighting instead: they evaluate at each vertex the
+// directional lights' dot products that interpolate exactly (INTERPOLATED_DOTS in
+// vtkPhongLightingLib.glsl).
 //============================================================================
 
 //PHONG_SECTION Dec
@@ -74,3 +78,25 @@ out vec3 phongSpecularLightBFVSOutput;
 //PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_ENDIF
+
+//PHONG_SECTION DotsDec
+uniform vec3 phongDirectionalLightToLightVC[@DIRECTIONAL_COUNT@]; // unit L_i
+out vec4 phongDirectionalNormalDotLVSOutput[@DIRECTIONAL_VEC4_COUNT@];
+//PHONG_IF !PARALLEL
+out vec4 phongDirectionalPositionDotLVSOutput[@DIRECTIONAL_VEC4_COUNT@];
+//PHONG_ENDIF
+
+//PHONG_SECTION DotsImpl
+  // n.L_i and P.L_i, with VTK's normal before normalization and position in view coordinates
+  // (the unused components of the last vec4 are 0).
+  phongDirectionalNormalDotLVSOutput[@DIRECTIONAL_VEC4_COUNT@ - 1] = vec4(0.0);
+//PHONG_IF !PARALLEL
+  phongDirectionalPositionDotLVSOutput[@DIRECTIONAL_VEC4_COUNT@ - 1] = vec4(0.0);
+//PHONG_ENDIF
+  for (int i = 0; i < @DIRECTIONAL_COUNT@; ++i) // unrolled (vtkPhongShaderTemplate)
+  {
+    phongDirectionalNormalDotLVSOutput[i / 4][i % 4] = dot(normalVCVSOutput, phongDirectionalLightToLightVC[i]);
+//PHONG_IF !PARALLEL
+    phongDirectionalPositionDotLVSOutput[i / 4][i % 4] = dot(vertexVCVSOutput.xyz, phongDirectionalLightToLightVC[i]);
+//PHONG_ENDIF
+  }

@@ -5,7 +5,9 @@
 // emission without a vtkPhongProperty, per-vertex lighting in the vertex shader
 // only, no specular colour arrays while every light's specular colour is its
 // diffuse colour, and no template directive left over. The all-features variant
-// holds everything and draws the same picture. Also resolves every template
+// holds everything and draws the same picture. Directional lights take N.L and L.V from dot
+// products interpolated from the vertices where VTK's vertex normal is the shading normal,
+// and draw the picture of the per-fragment dot products. Also resolves every template
 // section under many flag combinations without an error.
 
 #include "vtkPhongReferenceTesting.h"
@@ -13,12 +15,91 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongShaderBuilder.h"
+#include "vtkShaderProperty.h"
+#include "vtkSphereSource.h"
 
 namespace
 {
 bool Has(const std::string& source, const char* text)
 {
   return source.find(text) != std::string::npos;
+}
+
+// INTERPOLATED_DOTS: on for VTK's vertex normals under up to 16 directional lights with the
+// Phong lobe, off for the Blinn lobe, more lights or shader code of the user's (which may
+// change the normal). Where it is on, the float picture is the one of the per-fragment dot
+// products (a no-op replacement turns them back on) within float rounding, in perspective and
+// parallel projection, with one- and two-sided lighting, on a bowl that shows its back faces.
+// (Not bit for bit: the two round differently.)
+void CheckInterpolatedDots(vtkPhongTest::Checks& checks)
+{
+  vtkPhongTest::Scene view(96, 96);
+  view.Renderer->AutomaticLightCreationOff();
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double warm[3] = { 1.0, 0.8, 0.6 };
+  const double cool[3] = { 0.5, 0.7, 1.0 };
+  const double key[3] = { 0.5, 0.8, 1.0 };
+  const double rim[3] = { -1.0, -0.2, -0.3 };
+  vtkPhongTest::AddLight(view, key, origin, warm, false);
+  vtkPhongTest::AddLight(view, rim, origin, cool, false);
+  vtkNew<vtkSphereSource> bowl; // open: its inside shows the back faces
+  bowl->SetThetaResolution(48);
+  bowl->SetPhiResolution(48);
+  bowl->SetStartPhi(60.0);
+  bowl->Update();
+  vtkNew<vtkPhongProperty> shiny;
+  shiny->SetColor(0.8, 0.5, 0.3);
+  shiny->SetSpecular(0.6);
+  shiny->SetShininess(30.0);
+  vtkActor* actor = vtkPhongTest::AddActor(view, bowl->GetOutput(), shiny);
+  actor->RotateX(-60.0);
+  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
+  view.LookFromZ(2.5);
+  auto dotsOn = [&]
+  {
+    view.Window->Render();
+    return Has(mapper->GetLastShaderSignature(), "INTERPOLATED_DOTS") &&
+      Has(mapper->GetLastVertexShaderSource(), "phongDirectionalNormalDotLVSOutput");
+  };
+  checks.Expect(dotsOn(), "interpolated dots for 2 directional lights and the Phong lobe");
+
+  vtkNew<vtkPhongFloatRenderPass> floatPass;
+  vtkShaderProperty* shaders = actor->GetShaderProperty();
+  for (const bool parallel : { false, true })
+  {
+    for (const bool twoSided : { true, false })
+    {
+      view.Renderer->GetActiveCamera()->SetParallelProjection(parallel);
+      view.Renderer->SetTwoSidedLighting(twoSided);
+      const std::string where = std::string(parallel ? "parallel" : "perspective") +
+        (twoSided ? ", two-sided" : ", one-sided");
+      checks.Expect(dotsOn(), "interpolated dots, " + where);
+      auto withDots = vtkPhongTest::RenderFloat(view, floatPass);
+      shaders->AddFragmentShaderReplacement(
+        "//VTK::Light::Impl", false, "//VTK::Light::Impl", false);
+      checks.Expect(!dotsOn(), "no interpolated dots with a replacement of the user's, " + where);
+      auto withoutDots = vtkPhongTest::RenderFloat(view, floatPass);
+      shaders->ClearAllShaderReplacements();
+      // Float rounding only: within a hundredth of an 8-bit level at every pixel.
+      const auto error = vtkPhongTest::MeasureAgainst(withDots, withoutDots, 0);
+      checks.Expect(error.Valid && error.NaNPixels == 0 && error.MaxAbsolute <= 0.01 / 255.0,
+        "interpolated dots draw the picture of per-fragment dots, " + where +
+          " (largest difference " + std::to_string(error.MaxAbsolute) + ")");
+    }
+  }
+  view.Renderer->SetPass(nullptr);
+
+  shiny->SetLightingModelToBlinnPhong();
+  checks.Expect(!dotsOn(), "no interpolated dots with the Blinn lobe");
+  shiny->SetLightingModelToPhong();
+  for (int light = 2; light < 16; ++light)
+  {
+    vtkPhongTest::AddLight(view, key, origin, warm, false);
+  }
+  checks.Expect(dotsOn(), "interpolated dots for 16 directional lights");
+  vtkPhongTest::AddLight(view, key, origin, warm, false);
+  checks.Expect(!dotsOn(), "no interpolated dots for 17 directional lights");
+  checks.Expect(vtkPhongTest::NoGLErrors(view.Window, "interpolated dots"), "no GL error");
 }
 }
 
@@ -185,13 +266,13 @@ int TestPhongShaderSpecialization(int, char*[])
     vtkSmartPointer<vtkImageData> shared, sharedFloat, separate, separateFloat;
     const std::string sharedSource = renderBoth(shared, sharedFloat);
     checks.Expect(!Has(sharedSource, "phongDirectionalLightSpecular") &&
-        Has(sharedSource, "phongDirectionalLightDiffuse[i] * phongSpecular("),
+        Has(sharedSource, "phongDirectionalLightDiffuse[i] * specular;"),
       "equal colours: the specular sum reads the diffuse colours, no specular array");
     const int variants = ballMapper->GetNumberOfShaderVariants();
     backLight->SetSpecularColor(0.2, 0.4, 1.0);
     const std::string separateSource = renderBoth(separate, separateFloat);
     checks.Expect(Has(separateSource, "uniform vec3 phongDirectionalLightSpecular[2]") &&
-        Has(separateSource, "phongDirectionalLightSpecular[i] * phongSpecular("),
+        Has(separateSource, "phongDirectionalLightSpecular[i] * specular;"),
       "a specular colour apart: the specular sum reads its own colours");
     checks.Expect(ballMapper->GetNumberOfShaderVariants() == variants + 1,
       "a specular colour apart is one more variant");
@@ -234,6 +315,8 @@ int TestPhongShaderSpecialization(int, char*[])
       "composite mapper: back to shared arrays, no new variant");
     checks.Expect(vtkPhongTest::NoGLErrors(view.Window, "specular colours"), "no GL error");
   }
+
+  CheckInterpolatedDots(checks);
 
   // Every section of every template resolves cleanly under flag sets that
   // switch each conditional both ways.
