@@ -395,10 +395,13 @@ bool vtkPhongMapperCore::HasUnusableVectors(vtkDataArray* normals)
   Internals::NormalsScan& scan = this->Internal->NormalsScans[normals];
   scan.Time = normals->GetMTime();
   scan.Unusable = false;
+  // The shader normalizes in float: a squared length that underflows or overflows a float
+  // (with room for the actor's scale, which the normal matrix applies first) has no usable
+  // direction there, however valid in double.
   auto unusable = [](double x, double y, double z)
   {
     const double lengthSquared = x * x + y * y + z * z;
-    return !(lengthSquared > 0.0) || !std::isfinite(lengthSquared);
+    return !(lengthSquared >= 1.0e-30 && lengthSquared <= 1.0e30);
   };
   const vtkIdType count = normals->GetNumberOfTuples();
   if (auto* floats = vtkFloatArray::SafeDownCast(normals))

@@ -102,8 +102,9 @@ public:
   void ReportProblems(vtkObject* reporter);
 
   /**
-   * Whether a normals array holds zero, NaN or infinite vectors; scanned once per array
-   * and modification.
+   * Whether a normals array holds zero, NaN or infinite vectors, or vectors too short or too
+   * long for the shader to normalize in float (squared length outside [1e-30, 1e30]);
+   * scanned once per array and modification.
    */
   bool HasUnusableVectors(vtkDataArray* normals);
 

@@ -14,6 +14,7 @@
 #include "vtkPhongProperty.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
@@ -165,7 +166,11 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   SetMaterialFeatures(terms, allFeatures, plan);
   const bool perVertex = SetInterpolationFeatures(terms, state, geometryView, ren, plan);
   SetNormalFeatures(terms, state, perVertex, allFeatures, plan);
-  SetInterpolatedDotsFeature(state, allFeatures, plan);
+  if (this->InterpolatedDotLights == 0)
+  {
+    this->InterpolatedDotLights = MaximumInterpolatedDotLights();
+  }
+  SetInterpolatedDotsFeature(state, allFeatures, this->InterpolatedDotLights, plan);
   plan.Signature = MakeSignature(plan, allFeatures);
   return plan;
 }
@@ -434,16 +439,15 @@ void vtkPhongShaderPlanner::SetNormalFeatures(
 // Per-fragment directional lights can take N.L and L.V from dot products evaluated at the
 // vertices (INTERPOLATED_DOTS, vtkPhongLightingLib.glsl): exact, and it saves each fragment a
 // uniform read and two dot products per light (8 directional lights on the 130k-triangle
-// sphere at 1280x1024: the lighting's 30 ms drops by a quarter, docs/results/performance.md).
+// sphere at 1280x1024: the lighting's 30 ms drops by a fifth, docs/results/performance.md).
 // Only where the shading normal is VTK's interpolated vertex normal, normalized and flipped:
 // no cell normals, impostors, geometry shader, normal fallback or shader code of the user's
 // (which may change the normal; vtkPhongShaderTemplate also checks VTK's normal code), with
-// the Phong lobe (the Blinn halfway vector needs L itself) and at most 16 lights (two vec4
-// varyings per 4 lights, within what every OpenGL 3.2 implementation interpolates).
+// the Phong lobe (the Blinn halfway vector needs L itself) and as many lights as the varyings
+// carry.
 void vtkPhongShaderPlanner::SetInterpolatedDotsFeature(
-  const PrimitiveState& state, bool allFeatures, Plan& plan)
+  const PrimitiveState& state, bool allFeatures, std::size_t maximumLights, Plan& plan)
 {
-  constexpr std::size_t maximumLights = 16;
   const vtkPhongFeatureSet& features = plan.Features;
   const bool vertexNormal = state.HasPointNormals && !state.HasCellNormals &&
     !state.NormalsFromShape && !state.HasGeometryShader && !state.HasUserShaderCode;
@@ -452,6 +456,16 @@ void vtkPhongShaderPlanner::SetInterpolatedDotsFeature(
       features.Has(Feature::Directional) && features.Has(Feature::ShadingNormal) &&
       !features.Has(Feature::NormalFallback) && !features.Has(Feature::LobeBlinn) &&
       plan.DirectionalLights.size() <= maximumLights);
+}
+
+//------------------------------------------------------------------------------
+std::size_t vtkPhongShaderPlanner::MaximumInterpolatedDotLights()
+{
+  constexpr GLint keptForVTK = 32;
+  GLint components = 60; // the least an OpenGL 3.2 context offers
+  glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &components);
+  const GLint lights = 4 * std::max(0, (components - keptForVTK) / 8);
+  return static_cast<std::size_t>(std::min(lights, 64));
 }
 
 //------------------------------------------------------------------------------

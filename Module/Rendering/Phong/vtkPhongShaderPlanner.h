@@ -20,8 +20,9 @@
 
 #include "vtkPhongShaderBuilder.h" // for Plan, PrimitiveState, Options
 
-#include <string> // for std::string
-#include <vector> // for std::vector
+#include <cstddef> // for std::size_t
+#include <string>  // for std::string
+#include <vector>  // for std::vector
 
 class vtkPhongProblemLog;
 
@@ -54,6 +55,15 @@ public:
    */
   static std::vector<vtkLight*> SwitchedOnLights(vtkRenderer* ren);
 
+  /**
+   * How many directional lights the varyings of INTERPOLATED_DOTS (docs/shaders.md) can carry
+   * in the current OpenGL context: two vec4 per four lights, within the fragment inputs the
+   * context offers less 32 components kept for VTK's own (position, normal, texture
+   * coordinates, colours), and at most 64 (the unrolled light loops). Call with the context
+   * current.
+   */
+  static std::size_t MaximumInterpolatedDotLights();
+
 private:
   // The terms of the equation the variant evaluates.
   struct Terms
@@ -79,11 +89,13 @@ private:
     bool geometryView, vtkRenderer* ren, Plan& plan);
   static void SetNormalFeatures(
     const Terms& terms, const PrimitiveState& state, bool perVertex, bool allFeatures, Plan& plan);
-  static void SetInterpolatedDotsFeature(const PrimitiveState& state, bool allFeatures, Plan& plan);
+  static void SetInterpolatedDotsFeature(
+    const PrimitiveState& state, bool allFeatures, std::size_t maximumLights, Plan& plan);
   static std::string MakeSignature(const Plan& plan, bool allFeatures);
 
   PlaceholderLights Placeholders;
   vtkPhongProblemLog& Log;
+  std::size_t InterpolatedDotLights = 0; ///< MaximumInterpolatedDotLights(), once known
 };
 
 #endif

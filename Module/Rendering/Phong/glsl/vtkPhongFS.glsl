@@ -85,7 +85,9 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_IF INTERPOLATED_DOTS
   bool phongNormalIsView = false;
 //PHONG_ENDIF
-  if (!(dot(phongNormalVC, phongNormalVC) > 0.5)) // interpolated normals that cancel out
+  // Normalized, a usable normal has length 1: normals that cancel out when interpolated, or
+  // too short or too long to normalize in float, come out 0, infinite or NaN.
+  if (!(abs(dot(phongNormalVC, phongNormalVC) - 1.0) < 0.5))
   {
     phongNormalVC = phongViewVC;
 //PHONG_IF INTERPOLATED_DOTS
@@ -94,7 +96,7 @@ in vec3 phongSpecularLightBFVSOutput;
   }
 //PHONG_ENDIF
 //PHONG_IF NORMAL_FALLBACK
-  if (!(dot(phongNormalVC, phongNormalVC) > 0.5)) // zero-length or NaN normal
+  if (!(abs(dot(phongNormalVC, phongNormalVC) - 1.0) < 0.5)) // zero, NaN, too short or too long
   {
     float geometricLength = length(phongGeometricNormalVC);
     phongNormalVC = geometricLength > 0.0 ? phongGeometricNormalVC / geometricLength : phongViewVC;
@@ -102,7 +104,7 @@ in vec3 phongSpecularLightBFVSOutput;
     {
       phongNormalVC = -phongNormalVC; // face the viewer, as VTK's normals do on back faces
     }
-    if (!(dot(phongNormalVC, phongNormalVC) > 0.5))
+    if (!(abs(dot(phongNormalVC, phongNormalVC) - 1.0) < 0.5))
     {
       phongNormalVC = phongViewVC;
     }

@@ -1,11 +1,54 @@
-// Normals people really have: some zero-length, some NaN. The fragments that
-// interpolate them fall back to the face's geometric normal (per fragment) or
-// to facing the eye (per vertex); no pixel is NaN (black) and no error stops
-// the render.
+// Normals people really have: some zero-length, some NaN, or all too short or too long
+// for float. The fragments that interpolate them fall back to the face's geometric normal
+// (per fragment) or to facing the eye (per vertex); no pixel is NaN (black) and no error
+// stops the render.
 
 #include "vtkPhongTestUtilities.h"
 
 #include <limits>
+#include <utility>
+
+namespace
+{
+// The sphere under one light, its normals scaled by `scale`, as the 8-bit picture.
+vtkSmartPointer<vtkImageData> RenderScaledNormals(double scale)
+{
+  vtkPhongTest::Scene view(96, 96);
+  auto sphere = vtkPhongTest::MakeSphere(48, 0.45);
+  vtkDataArray* normals = sphere->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+  {
+    const double* n = normals->GetTuple3(i);
+    normals->SetTuple3(i, scale * n[0], scale * n[1], scale * n[2]);
+  }
+  vtkNew<vtkPhongProperty> material;
+  material->SetColor(0.8, 0.7, 0.5);
+  material->SetAmbient(0.3);
+  material->SetSpecular(0.4);
+  material->SetShininess(30.0);
+  vtkPhongTest::AddActor(view, sphere, material);
+  view.LookFromZ(1.6);
+  view.Window->Render();
+  return vtkPhongTest::Snapshot(view.Window);
+}
+
+// Normals valid in double but too short or too long to normalize in float (1e-20 and 1e20
+// times unit length): the shader normalized them to infinite vectors and drew white and black
+// pixels. They now take the face's geometric normal: the picture of unit normals, faceted.
+void CheckNormalsBeyondFloat(vtkPhongTest::Checks& checks)
+{
+  auto unit = RenderScaledNormals(1.0);
+  const std::pair<double, const char*> scales[] = { { 1.0e-20, "1e-20" }, { 1.0e20, "1e20" } };
+  for (const auto& scale : scales)
+  {
+    const int difference = vtkPhongTest::MaxDifference(unit, RenderScaledNormals(scale.first));
+    checks.Expect(difference <= 24,
+      std::string("normals ") + scale.second +
+        " times unit length: the unit normals' picture, faceted (largest difference " +
+        std::to_string(difference) + " levels)");
+  }
+}
+}
 
 int TestPhongBadNormals(int argc, char* argv[])
 {
@@ -59,5 +102,6 @@ int TestPhongBadNormals(int argc, char* argv[])
       std::string(i == 0 ? "per-fragment" : "per-vertex") + ": no NaN pixel (darkest red " +
         std::to_string(darkest) + ")");
   }
+  CheckNormalsBeyondFloat(checks);
   return vtkPhongTest::Finish(argc, argv, scene.Window, checks.Passed);
 }
