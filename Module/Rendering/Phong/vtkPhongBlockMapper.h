@@ -133,7 +133,7 @@ protected:
       [&]() { this->Superclass::BuildShaders(shaders, ren, act); },
       [&]()
       {
-        this->GetShaderTemplate(shaders, ren, act);
+        this->GetShaderTemplate(shaders, ren, vtkPhongMapperCore::TemplateActor(act));
         this->ReplaceShaderValues(shaders, ren, act);
       });
   }

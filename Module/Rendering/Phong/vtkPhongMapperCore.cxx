@@ -142,12 +142,23 @@ void vtkPhongMapperCore::FinishBuild(std::map<vtkShader::Type, vtkShader*>& shad
     if (!Compiles(shaders, ren))
     {
       vtkErrorWithObjectMacro(reporter,
-        "The actor's shader replacements (vtkShaderProperty) fail to compile with VTK's own "
-        "shader too; the primitive is drawn without them.");
+        "The actor's shader code or replacements (vtkShaderProperty) fail to compile with "
+        "VTK's own lighting too; the primitive is drawn with VTK's shaders, without them.");
       buildBare();
     }
   }
   this->ShadersBuilt(shaders, cellBO);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkActor> vtkPhongMapperCore::TemplateActor(vtkActor* act)
+{
+  auto standIn = vtkSmartPointer<vtkActor>::New();
+  standIn->SetProperty(act->GetProperty());
+  standIn->SetBackfaceProperty(act->GetBackfaceProperty());
+  standIn->SetTexture(act->GetTexture());
+  standIn->SetPropertyKeys(act->GetPropertyKeys());
+  return standIn;
 }
 
 //------------------------------------------------------------------------------

@@ -23,6 +23,7 @@
 #include "vtkPhongShaderBuilder.h"   // for Plan, PrimitiveState, Options
 #include "vtkRenderingPhongModule.h" // for export macro
 #include "vtkShader.h"               // for vtkShader::Type
+#include "vtkSmartPointer.h"         // for vtkSmartPointer
 
 #include <functional> // for std::function
 #include <map>        // for std::map
@@ -77,9 +78,16 @@ public:
    * VTK asks for their program (VTK 9.1 dereferences the null program of a first build that
    * fails). A vtkPhong variant that fails is reported once, remembered, and the primitive
    * rebuilt with VTK's lighting (`buildStock`, the stock BuildShaders); sources that still fail
-   * (the actor's own shader replacements are broken, where stock VTK 9.1 crashes) are reported
-   * and rebuilt without the replacements (`buildBare`). Ends with ShadersBuilt().
+   * (the actor's own shader replacements or shader code are broken, where stock VTK 9.1
+   * crashes) are reported and rebuilt without them (`buildBare`: VTK's templates, taken
+   * through TemplateActor(), and VTK's substitutions). Ends with ShadersBuilt().
    */
+  /**
+   * A stand-in for `act` with its properties and no shader code of the user's: what the stock
+   * GetShaderTemplate needs to choose VTK's own templates for the bare rebuild of FinishBuild.
+   */
+  static vtkSmartPointer<vtkActor> TemplateActor(vtkActor* act);
+
   void FinishBuild(std::map<vtkShader::Type, vtkShader*>& shaders, vtkOpenGLHelper* cellBO,
     vtkRenderer* ren, vtkActor* act, vtkObject* reporter, const std::function<void()>& buildStock,
     const std::function<void()>& buildBare);

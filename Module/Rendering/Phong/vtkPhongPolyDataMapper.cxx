@@ -245,7 +245,7 @@ void vtkPhongPolyDataMapper::BuildShaders(
     [&]() { this->Superclass::BuildShaders(shaders, ren, act); },
     [&]()
     {
-      this->GetShaderTemplate(shaders, ren, act);
+      this->GetShaderTemplate(shaders, ren, vtkPhongMapperCore::TemplateActor(act));
       this->ReplaceShaderValues(shaders, ren, act);
     });
 }

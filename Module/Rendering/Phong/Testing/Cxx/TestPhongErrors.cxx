@@ -4,7 +4,8 @@
 // - negative or NaN light intensities and colours, NaN material colours and a
 //   debug light index with no light are reported once, by the mapper;
 // - a shader that fails to compile reports the source and the compiler log,
-//   and the primitive falls back to VTK's own lighting.
+//   and the primitive falls back to VTK's own lighting; broken shader code of the
+//   user's falls back to VTK's shaders (stock VTK 9.1 crashes).
 
 #include "vtkPhongTestUtilities.h"
 
@@ -14,6 +15,39 @@
 #include "vtkStringOutputWindow.h"
 
 #include <limits>
+
+namespace
+{
+// The actor's own vertex shader code that does not compile (stock VTK 9.1 dereferences the
+// null program and crashes): reported, and the primitive drawn with VTK's shaders, frame after
+// frame, the depth pre-pass included.
+void CheckBrokenShaderCode(vtkPhongTest::Checks& checks)
+{
+  vtkPhongTest::Scene scene(64, 64);
+  vtkNew<vtkPhongProperty> material;
+  vtkActor* actor = vtkPhongTest::AddActor(scene, vtkPhongTest::MakeSphere(32), material);
+  actor->GetShaderProperty()->SetVertexShaderCode(
+    "//VTK::System::Dec\nin vec4 vertexMC;\nvoid main() { gl_Position = vertexMC + typo; }\n");
+  vtkPhongTest::ErrorCollector messages;
+  messages.Observe(actor->GetMapper());
+  vtkNew<vtkStringOutputWindow> captured; // the compiler's log, kept off the harness's output
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  vtkOutputWindow::SetInstance(captured);
+  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  scene.LookFromZ(2.5);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    scene.Window->Render();
+  }
+  vtkLogger::SetStderrVerbosity(verbosity);
+  vtkOutputWindow::SetInstance(previous);
+  checks.Expect(messages.Contains("fail to compile with VTK's own lighting too"),
+    "broken shader code of the user's is reported");
+  checks.Expect(vtkPhongTest::PixelAt(vtkPhongTest::Snapshot(scene.Window), 32, 32)[0] > 0,
+    "the primitive is still drawn, with VTK's shaders");
+}
+}
 
 int TestPhongErrors(int, char*[])
 {
@@ -137,5 +171,6 @@ int TestPhongErrors(int, char*[])
     checks.Expect(
       std::string(mapper->GetLastShaderSignature()).empty(), "the fallback is VTK's own shader");
   }
+  CheckBrokenShaderCode(checks);
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -880,7 +880,7 @@ def broken_replacement(composite):
         vtkOutputWindow.SetInstance(previous)
     log = captured.GetOutput()
     what = "composite" if composite else "polydata"
-    checks.expect("fail to compile with VTK's own shader too" in log,
+    checks.expect("fail to compile with VTK's own lighting too" in log,
                   "%s: the broken replacement is reported" % what)
     checks.expect(pixels.max() > 0, "%s: the primitive is still drawn, without it" % what)
     print("| broken //VTK::Light::Impl replacement, %s mapper | - | - | - | no crash (stock "
