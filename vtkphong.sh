@@ -269,6 +269,8 @@ case "$command" in
     "$build/bin/vtkOpenMeshNormalsBenchmark" "$build/data/meshes/refined_elephant.off"
     PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
       "$root/Testing/Benchmarks/vtkPhongProgramMemory.py"
+    PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
+      "$root/Testing/Benchmarks/vtkPhongDirectionalCost.py"
     ;;
   study)
     install_packages

@@ -108,6 +108,7 @@ protected:
       this->Core->Options.DebugView = parent->GetDebugView();
       this->Core->Options.DebugLightIndex = parent->GetDebugLightIndex();
       this->Core->Options.Specialize = parent->GetShaderSpecialization();
+      this->Core->Options.InterpolatedDots = parent->GetInterpolatedDotProducts();
       this->Core->Options.LightCullingBound = parent->GetLightCullingBound();
     }
     this->Core->Options.DepthOnly = this->DrawingDepthOnly;

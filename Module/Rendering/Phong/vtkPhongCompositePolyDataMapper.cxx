@@ -230,6 +230,8 @@ void vtkPhongCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DebugView: " << this->DebugView << "\n";
   os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
+  os << indent << "InterpolatedDotProducts: " << (this->InterpolatedDotProducts ? "On" : "Off")
+     << "\n";
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "UsedDepthPrePass: " << (this->GetUsedDepthPrePass() ? "yes" : "no") << "\n";

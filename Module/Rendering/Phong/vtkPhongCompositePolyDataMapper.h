@@ -87,6 +87,16 @@ public:
 
   ///@{
   /**
+   * Interpolated dot products, as vtkPhongPolyDataMapper::SetInterpolatedDotProducts.
+   * Default on.
+   */
+  vtkSetMacro(InterpolatedDotProducts, bool);
+  vtkGetMacro(InterpolatedDotProducts, bool);
+  vtkBooleanMacro(InterpolatedDotProducts, bool);
+  ///@}
+
+  ///@{
+  /**
    * Light culling, as vtkPhongPolyDataMapper::SetLightCullingBound, over the whole actor's
    * bounds. Default 0.5 / 255; range [0, 1e9]; 0 evaluates every light.
    */
@@ -184,6 +194,7 @@ protected:
   int DebugView = vtkPhongPolyDataMapper::Final;
   int DebugLightIndex = 0;
   bool ShaderSpecialization = true;
+  bool InterpolatedDotProducts = true;
   double LightCullingBound = 0.5 / 255.0;
   bool ClosedSurfaceCulling = true;
   int DepthPrePass = vtkPhongPolyDataMapper::DepthPrePassAutomatic;

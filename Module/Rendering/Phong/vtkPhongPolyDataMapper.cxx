@@ -210,6 +210,7 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
   core->Options.DebugView = this->DebugView;
   core->Options.DebugLightIndex = this->DebugLightIndex;
   core->Options.Specialize = this->ShaderSpecialization;
+  core->Options.InterpolatedDots = this->InterpolatedDotProducts;
   core->Options.LightCullingBound = this->LightCullingBound;
   core->Options.DepthOnly = this->Internal->DrawingDepthOnly;
   core->MaximumNumberOfPrograms = this->MaximumNumberOfShaderPrograms;
@@ -497,6 +498,8 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalsSplitting: " << (this->NormalsSplitting ? "On" : "Off") << "\n";
   os << indent << "UsedGeneratedNormals: " << (this->UsedGeneratedNormals ? "yes" : "no") << "\n";
   os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
+  os << indent << "InterpolatedDotProducts: " << (this->InterpolatedDotProducts ? "On" : "Off")
+     << "\n";
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "UsedDepthPrePass: " << (this->UsedDepthPrePass ? "yes" : "no") << "\n";
@@ -525,6 +528,7 @@ void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
     this->SetNormalsFeatureAngle(phong->GetNormalsFeatureAngle());
     this->SetNormalsSplitting(phong->GetNormalsSplitting());
     this->SetShaderSpecialization(phong->GetShaderSpecialization());
+    this->SetInterpolatedDotProducts(phong->GetInterpolatedDotProducts());
     this->SetLightCullingBound(phong->GetLightCullingBound());
     this->SetDepthPrePass(phong->GetDepthPrePass());
     this->SetDepthPrePassOcclusionCulling(phong->GetDepthPrePassOcclusionCulling());

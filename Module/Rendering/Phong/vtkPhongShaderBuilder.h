@@ -86,6 +86,9 @@ public:
     /// false: the all-features variant (every optional term and light kind) instead of the
     /// shader the scene needs, for measuring what specialization buys
     bool Specialize = true;
+    /// directional lights' N.L and L.V from dot products interpolated from the vertices where
+    /// possible (INTERPOLATED_DOTS); false computes them per fragment, for measuring the trade
+    bool InterpolatedDots = true;
     /// positional lights may be left out of an actor while the colour they could add there
     /// stays within this bound (vtkPhongLightCulling); 0 keeps every light
     double LightCullingBound = 0.5 / 255.0;

@@ -170,7 +170,8 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   {
     this->InterpolatedDotLights = MaximumInterpolatedDotLights();
   }
-  SetInterpolatedDotsFeature(state, allFeatures, this->InterpolatedDotLights, plan);
+  SetInterpolatedDotsFeature(
+    state, options.InterpolatedDots && !allFeatures, this->InterpolatedDotLights, plan);
   plan.Signature = MakeSignature(plan, allFeatures);
   return plan;
 }
@@ -444,15 +445,15 @@ void vtkPhongShaderPlanner::SetNormalFeatures(
 // no cell normals, impostors, geometry shader, normal fallback or shader code of the user's
 // (which may change the normal; vtkPhongShaderTemplate also checks VTK's normal code), with
 // the Phong lobe (the Blinn halfway vector needs L itself) and as many lights as the varyings
-// carry.
+// carry; `allowed`: the mapper's InterpolatedDotProducts, and not the all-features variant.
 void vtkPhongShaderPlanner::SetInterpolatedDotsFeature(
-  const PrimitiveState& state, bool allFeatures, std::size_t maximumLights, Plan& plan)
+  const PrimitiveState& state, bool allowed, std::size_t maximumLights, Plan& plan)
 {
   const vtkPhongFeatureSet& features = plan.Features;
   const bool vertexNormal = state.HasPointNormals && !state.HasCellNormals &&
     !state.NormalsFromShape && !state.HasGeometryShader && !state.HasUserShaderCode;
   plan.Features.Set(Feature::InterpolatedDots,
-    !allFeatures && vertexNormal && features.Has(Feature::SumsPerFragment) &&
+    allowed && vertexNormal && features.Has(Feature::SumsPerFragment) &&
       features.Has(Feature::Directional) && features.Has(Feature::ShadingNormal) &&
       !features.Has(Feature::NormalFallback) && !features.Has(Feature::LobeBlinn) &&
       plan.DirectionalLights.size() <= maximumLights);

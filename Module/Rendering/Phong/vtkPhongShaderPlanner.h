@@ -90,7 +90,7 @@ private:
   static void SetNormalFeatures(
     const Terms& terms, const PrimitiveState& state, bool perVertex, bool allFeatures, Plan& plan);
   static void SetInterpolatedDotsFeature(
-    const PrimitiveState& state, bool allFeatures, std::size_t maximumLights, Plan& plan);
+    const PrimitiveState& state, bool allowed, std::size_t maximumLights, Plan& plan);
   static std::string MakeSignature(const Plan& plan, bool allFeatures);
 
   PlaceholderLights Placeholders;

@@ -90,6 +90,9 @@ void CheckInterpolatedDots(vtkPhongTest::Checks& checks)
   }
   view.Renderer->SetPass(nullptr);
 
+  mapper->InterpolatedDotProductsOff();
+  checks.Expect(!dotsOn(), "no interpolated dots when the mapper's switch is off");
+  mapper->InterpolatedDotProductsOn();
   shiny->SetLightingModelToBlinnPhong();
   checks.Expect(!dotsOn(), "no interpolated dots with the Blinn lobe");
   shiny->SetLightingModelToPhong();
@@ -310,6 +313,13 @@ int TestPhongShaderSpecialization(int, char*[])
     auto signature = [&] { return std::string(composite->GetLastShaderSignature()); };
     checks.Expect(!signature().empty() && !Has(signature(), "SEPARATE_SPECULAR_COLORS"),
       "composite mapper, equal colours: shared colour arrays (" + signature() + ")");
+    checks.Expect(Has(signature(), "INTERPOLATED_DOTS"), "composite mapper: interpolated dots");
+    composite->InterpolatedDotProductsOff();
+    view.Window->Render();
+    checks.Expect(!Has(signature(), "INTERPOLATED_DOTS"),
+      "composite mapper: no interpolated dots when its switch is off");
+    composite->InterpolatedDotProductsOn();
+    view.Window->Render();
     backLight->SetSpecularColor(0.2, 0.4, 1.0);
     view.Window->Render();
     checks.Expect(Has(signature(), "SEPARATE_SPECULAR_COLORS"),
