@@ -18,6 +18,33 @@
 
 namespace
 {
+// While it lives, what VTK prints (a compiler's log) goes to a string and VTK's logger is
+// quiet: the harness fails a test whose output shows an error.
+class CapturedOutput
+{
+public:
+  CapturedOutput()
+    : Previous(vtkOutputWindow::GetInstance())
+    , Verbosity(vtkLogger::GetCurrentVerbosityCutoff())
+  {
+    vtkOutputWindow::SetInstance(this->Captured);
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  ~CapturedOutput()
+  {
+    vtkLogger::SetStderrVerbosity(this->Verbosity);
+    vtkOutputWindow::SetInstance(this->Previous);
+  }
+  CapturedOutput(const CapturedOutput&) = delete;
+  void operator=(const CapturedOutput&) = delete;
+  std::string Text() const { return this->Captured->GetOutput(); }
+
+private:
+  vtkNew<vtkStringOutputWindow> Captured;
+  vtkSmartPointer<vtkOutputWindow> Previous;
+  vtkLogger::Verbosity Verbosity;
+};
+
 // The actor's own vertex shader code that does not compile (stock VTK 9.1 dereferences the
 // null program and crashes): reported, and the primitive drawn with VTK's shaders, frame after
 // frame, the depth pre-pass included.
@@ -30,18 +57,14 @@ void CheckBrokenShaderCode(vtkPhongTest::Checks& checks)
     "//VTK::System::Dec\nin vec4 vertexMC;\nvoid main() { gl_Position = vertexMC + typo; }\n");
   vtkPhongTest::ErrorCollector messages;
   messages.Observe(actor->GetMapper());
-  vtkNew<vtkStringOutputWindow> captured; // the compiler's log, kept off the harness's output
-  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
-  vtkOutputWindow::SetInstance(captured);
-  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   scene.LookFromZ(2.5);
-  for (int frame = 0; frame < 3; ++frame)
   {
-    scene.Window->Render();
+    CapturedOutput output;
+    for (int frame = 0; frame < 3; ++frame)
+    {
+      scene.Window->Render();
+    }
   }
-  vtkLogger::SetStderrVerbosity(verbosity);
-  vtkOutputWindow::SetInstance(previous);
   checks.Expect(messages.Contains("fail to compile with VTK's own lighting too"),
     "broken shader code of the user's is reported");
   checks.Expect(vtkPhongTest::PixelAt(vtkPhongTest::Snapshot(scene.Window), 32, 32)[0] > 0,
@@ -148,20 +171,15 @@ int TestPhongErrors(int, char*[])
 
   { // A user replacement that breaks only the lighting variant: it must be
     // reported with source and log, and the primitive drawn by VTK's code.
-    // Capture what VTK prints (the output window) and keep its logger quiet,
-    // since the harness fails a test whose output shows an error.
-    vtkNew<vtkStringOutputWindow> captured;
-    vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
-    vtkOutputWindow::SetInstance(captured);
-    const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-    actor->GetShaderProperty()->AddFragmentShaderReplacement(
-      "phongSumLights(vertexVC", false, "phongSumLightsTypo(vertexVC", false);
-    const std::vector<int> fallback = renderCentre();
-    vtkLogger::SetStderrVerbosity(verbosity);
-    vtkOutputWindow::SetInstance(previous);
-
-    const std::string log = captured->GetOutput();
+    std::string log;
+    std::vector<int> fallback;
+    {
+      CapturedOutput output;
+      actor->GetShaderProperty()->AddFragmentShaderReplacement(
+        "phongSumLights(vertexVC", false, "phongSumLightsTypo(vertexVC", false);
+      fallback = renderCentre();
+      log = output.Text();
+    }
     checks.Expect(messages.Contains("failed to compile"), "the mapper reports the failed variant");
     checks.Expect(log.find("phongSumLightsTypo") != std::string::npos &&
         log.find("#version") != std::string::npos,
