@@ -454,9 +454,8 @@ void vtkPhongShaderPlanner::SetInterpolatedDotsFeature(
     !state.NormalsFromShape && !state.HasGeometryShader && !state.HasUserShaderCode;
   plan.Features.Set(Feature::InterpolatedDots,
     allowed && vertexNormal && features.Has(Feature::SumsPerFragment) &&
-      features.Has(Feature::Directional) && features.Has(Feature::ShadingNormal) &&
-      !features.Has(Feature::NormalFallback) && !features.Has(Feature::LobeBlinn) &&
-      plan.DirectionalLights.size() <= maximumLights);
+      features.Has(Feature::Directional) && !features.Has(Feature::NormalFallback) &&
+      !features.Has(Feature::LobeBlinn) && plan.DirectionalLights.size() <= maximumLights);
 }
 
 //------------------------------------------------------------------------------
