@@ -1,7 +1,7 @@
 """Render 6720 scene variants and write, for each, the shader signature, the hashes of the
 vertex, geometry and fragment sources and of the pixels, and the problems reported.
 
-For refactors of the shader builder: run it before and after, compare the two files
+For refactors of the shader path and the mappers: run it before and after, compare the two files
 (`cmp`); they must be identical. Not a ctest (two minutes on llvmpipe).
 
     PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \

@@ -168,7 +168,8 @@ public:
 
   ///@{
   /**
-   * Load every face into OpenMesh with PolyConnectivity::add_face, one by one. By default
+   * Measurement and testing only (the output is the same either way): load every face into
+   * OpenMesh with PolyConnectivity::add_face, one by one. By default
    * faces whose edges and points are regular (two opposite faces per interior edge, one fan
    * per point) are linked directly into OpenMesh's kernel, which gives the same halfedge
    * structure without add_face's searches, and only the others go through add_face. Default
@@ -181,7 +182,8 @@ public:
 
   ///@{
   /**
-   * Build OpenMesh's halfedge mesh also for a mesh whose faces are all regular (two opposite
+   * Measurement and testing only (the output is the same either way): build OpenMesh's
+   * halfedge mesh also for a mesh whose faces are all regular (two opposite
    * faces per interior edge, one fan per point). By default such a mesh skips it: the fan of
    * faces around each point is walked across the corners' twins, which gives the fans
    * OpenMesh's circulation would, in the same order, without the halfedge mesh's memory.

@@ -23,8 +23,8 @@
 #include <vector>
 
 // Everything below is written from docs/lighting-model.md, in double precision. It must not
-// call into vtkPhongShaderBuilder or read the GLSL: it is the independent side of every
-// comparison.
+// call into the shader path (planner, template, uniforms) or read the GLSL: it is the independent
+// side of every comparison.
 
 namespace
 {

@@ -5,7 +5,7 @@
  * vtkPhongReference evaluates docs/lighting-model.md in double precision (GLM) from the same
  * VTK objects vtkPhongPolyDataMapper reads: the renderer's camera, lights, ambient light and
  * two-sided lighting, and the actor's property, back-face property and matrix. It is written
- * from the model's text and shares no code with the GLSL or vtkPhongShaderBuilder, so a
+ * from the model's text and shares no code with the GLSL or the shader path, so a
  * mistake in either shows up as a difference.
  *
  * Two ways to feed it:

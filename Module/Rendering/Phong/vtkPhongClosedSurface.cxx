@@ -16,6 +16,9 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkPhongBufferBlocks.h"
+#include "vtkPhongRadixSort.h"
+#include "vtkPhongShaderCode.h"
 #include "vtkPhongVisibleClusters.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -48,46 +51,13 @@ constexpr double FlatVolumeShare = 1e-9;
 // How many ray-triangle tests the check of cavities may take (about 0.1 s).
 constexpr size_t MaximumEnclosureTests = size_t(16) << 20;
 
-// Radix sort: 16 bits a pass.
-constexpr size_t RadixBuckets = size_t(1) << 16;
-
 // Edge keys pack two point ids below 2^31 and a direction bit.
 constexpr std::uint64_t LargestPackedId = (std::uint64_t(1) << 31) - 1;
 }
 
 //------------------------------------------------------------------------------
-// Sorts keys below 2^bits, 16 bits a pass (least significant first): the edge keys of a
-// million triangles in about a tenth of std::sort's time.
-void vtkPhongClosedSurface::RadixSort(std::vector<std::uint64_t>& keys, int bits)
-{
-  std::vector<std::uint64_t> sorted(keys.size());
-  std::vector<size_t> starts(RadixBuckets + 1);
-  for (int shift = 0; shift < bits; shift += 16)
-  {
-    std::fill(starts.begin(), starts.end(), 0);
-    for (const std::uint64_t key : keys)
-    {
-      ++starts[((key >> shift) & (RadixBuckets - 1)) + 1];
-    }
-    std::partial_sum(starts.begin(), starts.end(), starts.begin());
-    for (const std::uint64_t key : keys)
-    {
-      sorted[starts[(key >> shift) & (RadixBuckets - 1)]++] = key;
-    }
-    keys.swap(sorted);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongClosedSurface::Update(
-  vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input, vtkMTimeType builtAt)
-{
-  this->Update(triangles, std::vector<Block>{ { input, 0 } }, builtAt);
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongClosedSurface::Update(
-  vtkOpenGLIndexBufferObject* triangles, const std::vector<Block>& blocks, vtkMTimeType builtAt)
+void vtkPhongClosedSurface::Update(vtkOpenGLIndexBufferObject* triangles,
+  const std::vector<vtkPhongBufferBlock>& blocks, vtkMTimeType builtAt)
 {
   if (builtAt == this->BuiltAt && triangles->IndexCount == this->IndexCount)
   {
@@ -96,14 +66,14 @@ void vtkPhongClosedSurface::Update(
   this->BuiltAt = builtAt;
   this->IndexCount = triangles->IndexCount;
   this->Orientation = 0;
-  for (const Block& block : blocks)
+  for (const vtkPhongBufferBlock& block : blocks)
   {
     if (!block.Data || !block.Data->GetPoints() || HasConcavePolygons(block.Data))
     {
       return;
     }
   }
-  vtkSmartPointer<vtkPolyData> points = PointsOfBlocks(blocks);
+  vtkSmartPointer<vtkPolyData> points = vtkPhongBufferBlocks::Points(blocks);
   std::vector<unsigned int> indices;
   if (points && vtkPhongVisibleClusters::ReadIndices(triangles, indices))
   {
@@ -118,57 +88,6 @@ void vtkPhongClosedSurface::Analyse(std::vector<unsigned int>& indices, vtkPolyD
   {
     this->Orientation = Orient(indices, input);
   }
-}
-
-//------------------------------------------------------------------------------
-vtkSmartPointer<vtkPolyData> vtkPhongClosedSurface::PointsOfBlocks(const std::vector<Block>& blocks)
-{
-  if (blocks.size() == 1 && blocks[0].FirstPoint == 0)
-  {
-    return blocks[0].Data;
-  }
-  struct Range
-  {
-    vtkIdType First, Last; // [First, Last)
-    vtkDataArray* Source;
-    bool operator<(const Range& other) const { return this->First < other.First; }
-  };
-  std::vector<Range> ranges;
-  vtkIdType count = 0;
-  for (const Block& block : blocks)
-  {
-    const vtkIdType last = block.FirstPoint + block.Data->GetNumberOfPoints();
-    if (last > block.FirstPoint)
-    {
-      ranges.push_back({ block.FirstPoint, last, block.Data->GetPoints()->GetData() });
-      count = std::max(count, last);
-    }
-  }
-  std::sort(ranges.begin(), ranges.end());
-  for (size_t k = 1; k < ranges.size(); ++k)
-  {
-    const Range& previous = ranges[k - 1];
-    const bool shared = ranges[k].First == previous.First && ranges[k].Source == previous.Source;
-    if (ranges[k].First < previous.Last && !shared)
-    {
-      return nullptr;
-    }
-  }
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(count);
-  points->GetData()->Fill(std::numeric_limits<double>::quiet_NaN());
-  for (const Block& block : blocks)
-  {
-    vtkDataArray* source = block.Data->GetPoints()->GetData();
-    for (vtkIdType p = 0; p < source->GetNumberOfTuples(); ++p)
-    {
-      points->SetPoint(block.FirstPoint + p, source->GetTuple3(p));
-    }
-  }
-  auto merged = vtkSmartPointer<vtkPolyData>::New();
-  merged->SetPoints(points);
-  return merged;
 }
 
 //------------------------------------------------------------------------------
@@ -280,7 +199,7 @@ bool vtkPhongClosedSurface::IsClosedAndConsistent(const std::vector<unsigned int
       edges.push_back((low << (bits + 1)) | (high << 1) | (from < to ? 0 : 1));
     }
   }
-  RadixSort(edges, 2 * bits + 1);
+  vtkPhongRadixSort(edges, 2 * bits + 1);
   for (size_t e = 0; e < edges.size(); e += 2)
   {
     const bool paired = e + 1 < edges.size() && (edges[e] & 1) == 0 && edges[e + 1] == edges[e] + 1;
@@ -500,43 +419,7 @@ bool vtkPhongClosedSurface::DrawsOnlySurfaces(vtkRenderer* ren, vtkActor* act,
   const bool onlyTriangles = primitives[Mapper::PrimitiveTris].IBO->IndexCount > 0 &&
     primitives[Mapper::PrimitiveTriStrips].IBO->IndexCount == 0 && !linesOfTriangles &&
     !pointsOfTriangles;
-  return plainOpaqueSurface && onlyTriangles && !HasShaderCode(act, legacyShaders) &&
-    clippingPlanes == 0 && !ren->GetSelector() &&
-    !(keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()));
-}
-
-//------------------------------------------------------------------------------
-bool vtkPhongClosedSurface::HasShaderCode(vtkActor* act, vtkShaderProperty* legacyShaders)
-{
-  vtkShaderProperty* shaders = act->GetShaderProperty();
-  const bool actorCode = shaders &&
-    (shaders->GetNumberOfShaderReplacements() > 0 || shaders->HasVertexShaderCode() ||
-      shaders->HasFragmentShaderCode() || shaders->HasGeometryShaderCode());
-  return actorCode || (legacyShaders && legacyShaders->GetNumberOfShaderReplacements() > 0);
-}
-
-//------------------------------------------------------------------------------
-vtkPhongClosedSurface::ScopedCulling::ScopedCulling(vtkRenderer* ren, unsigned int faces)
-{
-  if (faces == 0)
-  {
-    return;
-  }
-  this->State = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
-  this->WasEnabled = this->State->GetEnumState(GL_CULL_FACE);
-  GLint mode = GL_BACK;
-  this->State->vtkglGetIntegerv(GL_CULL_FACE_MODE, &mode);
-  this->Mode = mode;
-  this->State->vtkglCullFace(faces);
-  this->State->vtkglEnable(GL_CULL_FACE);
-}
-
-//------------------------------------------------------------------------------
-vtkPhongClosedSurface::ScopedCulling::~ScopedCulling()
-{
-  if (this->State)
-  {
-    this->State->SetEnumState(GL_CULL_FACE, this->WasEnabled);
-    this->State->vtkglCullFace(static_cast<GLenum>(this->Mode));
-  }
+  return plainOpaqueSurface && onlyTriangles &&
+    !vtkPhongShaderCode::HasUserCode(act, legacyShaders) && clippingPlanes == 0 &&
+    !ren->GetSelector() && !(keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()));
 }

@@ -39,9 +39,10 @@
 #ifndef vtkPhongClosedSurface_h
 #define vtkPhongClosedSurface_h
 
-#include "vtkBoundingBox.h"  // for vtkBoundingBox
-#include "vtkSmartPointer.h" // for vtkSmartPointer
-#include "vtkType.h"         // for vtkMTimeType
+#include "vtkBoundingBox.h"       // for vtkBoundingBox
+#include "vtkPhongBufferBlocks.h" // for vtkPhongBufferBlock
+#include "vtkSmartPointer.h"      // for vtkSmartPointer
+#include "vtkType.h"              // for vtkMTimeType
 
 #include <cstddef> // for size_t
 #include <cstdint> // for std::uint64_t
@@ -50,7 +51,6 @@
 class vtkActor;
 class vtkOpenGLHelper;
 class vtkOpenGLIndexBufferObject;
-class vtkOpenGLState;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProperty;
@@ -59,35 +59,12 @@ class vtkPhongClosedSurface
 {
 public:
   /**
-   * Analyse the triangles VTK's index buffer `triangles` draws (indices into the points of
-   * `input`) when the buffer was rebuilt since (`builtAt`, VTK's VBOBuildTime). Call with
-   * the window's context current.
+   * Analyse the triangles VTK's index buffer `triangles` draws (indices into the vertex
+   * buffer that holds the points of `blocks`) when the buffer was rebuilt since (`builtAt`,
+   * VTK's VBOBuildTime). Call with the window's context current.
    */
-  void Update(vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input, vtkMTimeType builtAt);
-
-  /**
-   * A block of a vertex buffer that holds several (a composite mapper's): its polydata,
-   * whose points the buffer holds from FirstPoint on.
-   */
-  struct Block
-  {
-    vtkPolyData* Data = nullptr;
-    vtkIdType FirstPoint = 0;
-  };
-
-  /**
-   * The same for the blocks one index buffer draws from one vertex buffer.
-   */
-  void Update(
-    vtkOpenGLIndexBufferObject* triangles, const std::vector<Block>& blocks, vtkMTimeType builtAt);
-
-  /**
-   * The points of the vertex buffer the blocks share, in its order (the one block itself
-   * when it starts the buffer); nullptr when two blocks claim the same vertices with points
-   * of their own (blocks with the same points array share its vertices: VTK uploads it
-   * once). Vertices no block claims are NaN.
-   */
-  static vtkSmartPointer<vtkPolyData> PointsOfBlocks(const std::vector<Block>& blocks);
+  void Update(vtkOpenGLIndexBufferObject* triangles, const std::vector<vtkPhongBufferBlock>& blocks,
+    vtkMTimeType builtAt);
 
   /**
    * +1: closed surfaces, each enclosing its volume with outward faces; -1: all inward;
@@ -114,29 +91,6 @@ public:
   static bool DrawsOnlySurfaces(vtkRenderer* ren, vtkActor* act, const vtkOpenGLHelper* primitives,
     vtkShaderProperty* legacyShaders, int clippingPlanes);
 
-  /**
-   * Whether the actor's shader property, or `legacyShaders` (the mapper's own replacements
-   * before VTK 9.2), holds shader code or replacements of the user's.
-   */
-  static bool HasShaderCode(vtkActor* act, vtkShaderProperty* legacyShaders);
-  /**
-   * Culls `faces` (GL_BACK or GL_FRONT; 0: nothing) for as long as it lives, then restores the
-   * window's culling state.
-   */
-  class ScopedCulling
-  {
-  public:
-    ScopedCulling(vtkRenderer* ren, unsigned int faces);
-    ~ScopedCulling();
-    ScopedCulling(const ScopedCulling&) = delete;
-    void operator=(const ScopedCulling&) = delete;
-
-  private:
-    vtkOpenGLState* State = nullptr;
-    bool WasEnabled = false;
-    int Mode = 0;
-  };
-
 private:
   void Analyse(std::vector<unsigned int>& indices, vtkPolyData* input);
   static bool HasConcavePolygons(vtkPolyData* input);
@@ -144,7 +98,6 @@ private:
   static bool WeldTriangles(
     std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded);
   static bool IsClosedAndConsistent(const std::vector<unsigned int>& triangles);
-  static void RadixSort(std::vector<std::uint64_t>& keys, int bits);
   struct Surface
   {
     double Volume = 0.0;

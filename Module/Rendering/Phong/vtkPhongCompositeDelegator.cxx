@@ -1,7 +1,6 @@
 #include "vtkPhongCompositeDelegator.h"
 
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLBatchedPolyDataMapper.h"
 #include "vtkPhongBlockMapper.h"
 
 vtkStandardNewMacro(vtkPhongCompositeDelegator);
@@ -11,8 +10,7 @@ vtkPhongCompositeDelegator::vtkPhongCompositeDelegator()
 {
   // The superclass made a stock delegate; nothing has seen it yet. Delegate owns the
   // replacement, GLDelegate is the superclass' typed view of it.
-  auto* delegate = vtkPhongBlockMapper<vtkOpenGLBatchedPolyDataMapper>::New();
-  this->Core = delegate->GetCore();
+  auto* delegate = vtkPhongBlockMapper::New();
   this->GLDelegate = delegate;
   this->Delegate = vtk::TakeSmartPointer<vtkPolyDataMapper>(delegate);
 }

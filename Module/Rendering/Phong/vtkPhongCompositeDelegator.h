@@ -18,8 +18,6 @@
 
 #include "vtkOpenGLCompositePolyDataMapperDelegator.h"
 
-class vtkPhongMapperCore;
-
 class vtkPhongCompositeDelegator : public vtkOpenGLCompositePolyDataMapperDelegator
 {
 public:
@@ -27,16 +25,9 @@ public:
   vtkTypeMacro(vtkPhongCompositeDelegator, vtkOpenGLCompositePolyDataMapperDelegator);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /**
-   * The lighting core of the delegate (GetDelegate(), the mapper that draws the blocks).
-   */
-  vtkPhongMapperCore* GetCore() { return this->Core; }
-
 protected:
   vtkPhongCompositeDelegator();
   ~vtkPhongCompositeDelegator() override;
-
-  vtkPhongMapperCore* Core = nullptr; // owned by the delegate
 
 private:
   vtkPhongCompositeDelegator(const vtkPhongCompositeDelegator&) = delete;

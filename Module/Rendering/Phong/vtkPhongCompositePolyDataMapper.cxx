@@ -13,20 +13,11 @@
 #include "vtkPolyData.h"
 #include "vtkWeakPointer.h"
 
-#if VTKPHONG_VTK_9_3
-#include "vtkOpenGLBatchedPolyDataMapper.h"
-#include "vtkPhongBlockMapper.h"
-#include "vtkPhongCompositeDelegator.h"
-using vtkPhongHelper = vtkPhongBlockMapper<vtkOpenGLBatchedPolyDataMapper>;
-#else
-// VTK 9.1's vtkCompositeMapperHelper2.h uses these without including them.
-#include "vtkColor.h"
-#include "vtkHardwareSelector.h"
-#include "vtk_glew.h"
+#include <algorithm>
 
-#include "vtkCompositeMapperHelper2.h"
 #include "vtkPhongBlockMapper.h"
-using vtkPhongHelper = vtkPhongBlockMapper<vtkCompositeMapperHelper2>;
+#if VTKPHONG_VTK_9_3
+#include "vtkPhongCompositeDelegator.h"
 #endif
 
 #include <algorithm>
@@ -36,35 +27,44 @@ using vtkPhongHelper = vtkPhongBlockMapper<vtkCompositeMapperHelper2>;
 
 struct vtkPhongCompositePolyDataMapper::Internals
 {
-  // The helpers made so far, with their cores. The superclass deletes the helpers it no
-  // longer needs (and, on VTK 9.3, keeps them out of reach): their entries then expire.
-  std::vector<std::pair<vtkWeakPointer<vtkObject>, vtkPhongMapperCore*>> Helpers;
+  vtkPhongLightingSettingsHolder Settings;
+  // The helpers made so far. The superclass deletes the helpers it no longer needs (and, on
+  // VTK 9.3, keeps them out of reach): their entries then expire.
+  std::vector<vtkWeakPointer<vtkPhongBlockMapper>> Helpers;
   std::string LastSignature;
   // The leaves as the bounds and the block mappers see them: collapsed copies of those with
   // invalid cells.
   vtkPhongValidBlocks ValidBlocks;
 
-  void Add(vtkObject* helper, vtkPhongMapperCore* core)
+  // A helper lights with the composite mapper's settings and draws its valid blocks.
+  void Own(vtkPhongBlockMapper* helper, vtkPhongCompositePolyDataMapper* owner)
+  {
+    helper->SetOwner(
+      this->Settings.Get(), [owner](vtkPolyData* block) { return owner->GetValidBlock(block); });
+  }
+
+  void Add(vtkPhongBlockMapper* helper, vtkPhongCompositePolyDataMapper* owner)
   {
     this->Prune();
-    this->Helpers.emplace_back(helper, core);
+    this->Own(helper, owner);
+    this->Helpers.emplace_back(helper);
   }
 
   void Prune()
   {
-    auto expired = [](const std::pair<vtkWeakPointer<vtkObject>, vtkPhongMapperCore*>& helper)
-    { return helper.first == nullptr; };
+    auto expired = [](const vtkWeakPointer<vtkPhongBlockMapper>& helper)
+    { return helper == nullptr; };
     this->Helpers.erase(
       std::remove_if(this->Helpers.begin(), this->Helpers.end(), expired), this->Helpers.end());
   }
 
   // Whether a helper's statement about its last draw holds for any helper.
-  bool Any(bool (vtkPhongHelper::*statement)() const)
+  bool Any(bool (vtkPhongBlockMapper::*statement)() const)
   {
     this->Prune();
     for (const auto& helper : this->Helpers)
     {
-      if ((static_cast<vtkPhongHelper*>(helper.first.GetPointer())->*statement)())
+      if ((helper.GetPointer()->*statement)())
       {
         return true;
       }
@@ -79,7 +79,7 @@ struct vtkPhongCompositePolyDataMapper::Internals
     int sum = 0;
     for (const auto& helper : this->Helpers)
     {
-      sum += (helper.second->*statistic)();
+      sum += (helper->GetCore()->*statistic)();
     }
     return sum;
   }
@@ -97,20 +97,58 @@ vtkPhongCompositePolyDataMapper::vtkPhongCompositePolyDataMapper()
 //------------------------------------------------------------------------------
 vtkPhongCompositePolyDataMapper::~vtkPhongCompositePolyDataMapper() = default;
 
+//------------------------------------------------------------------------------
+vtkPhongLightingSettings* vtkPhongCompositePolyDataMapper::GetLightingSettings()
+{
+  return this->Internal->Settings.Get();
+}
+
+//------------------------------------------------------------------------------
+// The helpers made so far light with the new settings too.
+void vtkPhongCompositePolyDataMapper::SetLightingSettings(vtkPhongLightingSettings* settings)
+{
+  if (!this->Internal->Settings.Set(settings, this))
+  {
+    return;
+  }
+  this->Internal->Prune();
+  for (const auto& helper : this->Internal->Helpers)
+  {
+    this->Internal->Own(helper, this);
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkPhongCompositePolyDataMapper::GetMTime()
+{
+  return this->Internal->Settings.MTime(this->Superclass::GetMTime());
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongCompositePolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
+{
+  if (auto* phong = vtkPhongCompositePolyDataMapper::SafeDownCast(mapper))
+  {
+    this->Internal->Settings.Get()->DeepCopy(phong->GetLightingSettings());
+  }
+  this->Superclass::ShallowCopy(mapper);
+}
+
 #if VTKPHONG_VTK_9_3
 //------------------------------------------------------------------------------
 vtkCompositePolyDataMapperDelegator* vtkPhongCompositePolyDataMapper::CreateADelegator()
 {
   vtkPhongCompositeDelegator* delegator = vtkPhongCompositeDelegator::New();
-  this->Internal->Add(delegator->GetDelegate(), delegator->GetCore());
+  this->Internal->Add(static_cast<vtkPhongBlockMapper*>(delegator->GetDelegate()), this);
   return delegator;
 }
 #else
 //------------------------------------------------------------------------------
 vtkCompositeMapperHelper2* vtkPhongCompositePolyDataMapper::CreateHelper()
 {
-  auto* helper = vtkPhongHelper::New();
-  this->Internal->Add(helper, helper->GetCore());
+  auto* helper = vtkPhongBlockMapper::New();
+  this->Internal->Add(helper, this);
   return helper;
 }
 #endif
@@ -199,13 +237,13 @@ int vtkPhongCompositePolyDataMapper::GetNumberOfShaderVariants()
 //------------------------------------------------------------------------------
 bool vtkPhongCompositePolyDataMapper::GetUsedClosedSurfaceCulling()
 {
-  return this->Internal->Any(&vtkPhongHelper::GetUsedClosedSurfaceCulling);
+  return this->Internal->Any(&vtkPhongBlockMapper::GetUsedClosedSurfaceCulling);
 }
 
 //------------------------------------------------------------------------------
 bool vtkPhongCompositePolyDataMapper::GetUsedDepthPrePass()
 {
-  return this->Internal->Any(&vtkPhongHelper::GetUsedDepthPrePass);
+  return this->Internal->Any(&vtkPhongBlockMapper::GetUsedDepthPrePass);
 }
 
 //------------------------------------------------------------------------------
@@ -215,9 +253,10 @@ const char* vtkPhongCompositePolyDataMapper::GetLastShaderSignature()
   this->Internal->LastSignature.clear();
   for (const auto& helper : this->Internal->Helpers)
   {
-    if (!helper.second->GetLastShaderSignature().empty())
+    const std::string& signature = helper->GetCore()->GetLastShaderSignature();
+    if (!signature.empty())
     {
-      this->Internal->LastSignature = helper.second->GetLastShaderSignature();
+      this->Internal->LastSignature = signature;
     }
   }
   return this->Internal->LastSignature.c_str();
@@ -227,21 +266,12 @@ const char* vtkPhongCompositePolyDataMapper::GetLastShaderSignature()
 void vtkPhongCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "DebugView: " << this->DebugView << "\n";
-  os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
-  os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
-  os << indent << "InterpolatedDotProducts: " << (this->InterpolatedDotProducts ? "On" : "Off")
-     << "\n";
-  os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
-  os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "UsedDepthPrePass: " << (this->GetUsedDepthPrePass() ? "yes" : "no") << "\n";
-  os << indent
-     << "DepthPrePassOcclusionCulling: " << (this->DepthPrePassOcclusionCulling ? "On" : "Off")
-     << "\n";
-  os << indent << "ClosedSurfaceCulling: " << (this->ClosedSurfaceCulling ? "On" : "Off") << "\n";
   os << indent
      << "UsedClosedSurfaceCulling: " << (this->GetUsedClosedSurfaceCulling() ? "yes" : "no")
      << "\n";
+  os << indent << "LightingSettings:\n";
+  this->Internal->Settings.Get()->PrintSelf(os, indent.GetNextIndent());
   os << indent << "NumberOfHelpers: " << this->GetNumberOfHelpers() << "\n";
   os << indent << "ShaderCompileCount: " << this->GetShaderCompileCount() << "\n";
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";

@@ -5,13 +5,13 @@
  *
  * vtkPhongCompositePolyDataMapper is VTK's composite mapper whose helpers (the polydata
  * mappers that draw the blocks, grouped by what arrays they carry) light with the same
- * generated shaders as vtkPhongPolyDataMapper: the helpers forward their shader overrides to
- * the same vtkPhongMapperCore and vtkPhongShaderBuilder, so there is one implementation with
- * two entry points. Which composite mapper depends on the VTK version: before VTK 9.3 it is a
- * vtkCompositePolyDataMapper2 (the helpers are vtkCompositeMapperHelper2); from VTK 9.3 on,
- * where that class is deprecated and ParaView draws with vtkCompositePolyDataMapper, it is a
- * vtkCompositePolyDataMapper whose delegators' batched mappers are the helpers
- * (docs/compatibility.md). Per-block colours, opacities and visibilities of
+ * generated shaders as vtkPhongPolyDataMapper: both are made from vtkPhongLightingMapper, so
+ * there is one implementation with two entry points, and the same settings
+ * (vtkPhongLightingSettings) under the same names. Which composite mapper depends on the VTK
+ * version: before VTK 9.3 it is a vtkCompositePolyDataMapper2 (the helpers are
+ * vtkCompositeMapperHelper2); from VTK 9.3 on, where that class is deprecated and ParaView draws
+ * with vtkCompositePolyDataMapper, it is a vtkCompositePolyDataMapper whose delegators' batched
+ * mappers are the helpers (docs/compatibility.md). Per-block colours, opacities and visibilities of
  * vtkCompositeDataDisplayAttributes keep working (the lighting then reads VTK's per-block
  * colour variables instead of ready-made material products).
  *
@@ -33,9 +33,9 @@
 #ifndef vtkPhongCompositePolyDataMapper_h
 #define vtkPhongCompositePolyDataMapper_h
 
-#include "vtkPhongPolyDataMapper.h"  // for the DebugViews values
-#include "vtkRenderingPhongModule.h" // for export macro
-#include "vtkVersionMacros.h"        // for VTK_VERSION_NUMBER
+#include "vtkPhongLightingSettings.h" // for the settings
+#include "vtkRenderingPhongModule.h"  // for export macro
+#include "vtkVersionMacros.h"         // for VTK_VERSION_NUMBER
 
 #include <memory> // for std::unique_ptr
 
@@ -58,89 +58,22 @@ public:
   vtkTypeMacro(vtkPhongCompositePolyDataMapper, VTKPHONG_COMPOSITE_SUPERCLASS);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
   /**
-   * The debug view, as vtkPhongPolyDataMapper::SetDebugView. Default
-   * vtkPhongPolyDataMapper::Final; one of vtkPhongPolyDataMapper::DebugViews (clamped).
+   * The lighting settings (vtkPhongLightingSettings, where each is documented), each settable
+   * here under its own name, exactly as on vtkPhongPolyDataMapper: the debug view, light
+   * culling, the visibility work (closed-surface culling and the depth pre-pass, for each
+   * block mapper's blocks together), the shader cache and the two measurement-only switches.
+   * LightingSettings: the settings object itself, which mappers may share.
    */
-  vtkSetClampMacro(DebugView, int, vtkPhongPolyDataMapper::Final, vtkPhongPolyDataMapper::NormalVC);
-  vtkGetMacro(DebugView, int);
-  ///@}
+  vtkPhongLightingSettingsForwardingMacro();
 
   ///@{
   /**
-   * The light shown by the SingleLight view: an index into the renderer's lights. Default 0;
-   * range [0, VTK_INT_MAX] (an index past the last light shows black).
-   */
-  vtkSetClampMacro(DebugLightIndex, int, 0, VTK_INT_MAX);
-  vtkGetMacro(DebugLightIndex, int);
-  ///@}
-
-  ///@{
-  /**
-   * Shader specialization, as vtkPhongPolyDataMapper::SetShaderSpecialization. Default on.
-   */
-  vtkSetMacro(ShaderSpecialization, bool);
-  vtkGetMacro(ShaderSpecialization, bool);
-  vtkBooleanMacro(ShaderSpecialization, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Interpolated dot products, as vtkPhongPolyDataMapper::SetInterpolatedDotProducts.
-   * Default on.
-   */
-  vtkSetMacro(InterpolatedDotProducts, bool);
-  vtkGetMacro(InterpolatedDotProducts, bool);
-  vtkBooleanMacro(InterpolatedDotProducts, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Light culling, as vtkPhongPolyDataMapper::SetLightCullingBound, over the whole actor's
-   * bounds. Default 0.5 / 255; range [0, 1e9]; 0 evaluates every light.
-   */
-  vtkSetClampMacro(LightCullingBound, double, 0.0, 1.0e9);
-  vtkGetMacro(LightCullingBound, double);
-  ///@}
-
-  ///@{
-  /**
-   * Culling of hidden back faces, as vtkPhongPolyDataMapper::SetClosedSurfaceCulling, for
-   * each helper's blocks together (blocks with the same arrays share a helper): only while
-   * every block of the helper is visible and opaque, so that no block left out opens a
-   * surface the others close. Default on. UsedClosedSurfaceCulling: whether a helper culled
+   * Whether a block mapper culled back faces, and whether one drew with the depth pre-pass,
    * in the last render.
    */
-  vtkSetMacro(ClosedSurfaceCulling, bool);
-  vtkGetMacro(ClosedSurfaceCulling, bool);
-  vtkBooleanMacro(ClosedSurfaceCulling, bool);
   bool GetUsedClosedSurfaceCulling();
-  ///@}
-
-  ///@{
-  /**
-   * Depth pre-pass, as vtkPhongPolyDataMapper::SetDepthPrePass, for each helper's blocks
-   * together (without its occlusion culling of triangle clusters). Default
-   * DepthPrePassAutomatic; one of vtkPhongPolyDataMapper::DepthPrePassModes (clamped).
-   * Never for a helper whose blocks mix point and cell scalars, which VTK 9.1 colours wrongly.
-   * UsedDepthPrePass: whether a helper drew with it in the last render.
-   */
-  vtkSetClampMacro(DepthPrePass, int, vtkPhongPolyDataMapper::DepthPrePassOff,
-    vtkPhongPolyDataMapper::DepthPrePassAutomatic);
-  vtkGetMacro(DepthPrePass, int);
   bool GetUsedDepthPrePass();
-  ///@}
-
-  ///@{
-  /**
-   * Occlusion culling of the depth pre-pass, as
-   * vtkPhongPolyDataMapper::SetDepthPrePassOcclusionCulling, over each helper's blocks
-   * together, while every one of them is visible and opaque. Default on.
-   */
-  vtkSetMacro(DepthPrePassOcclusionCulling, bool);
-  vtkGetMacro(DepthPrePassOcclusionCulling, bool);
-  vtkBooleanMacro(DepthPrePassOcclusionCulling, bool);
   ///@}
 
   ///@{
@@ -159,6 +92,12 @@ public:
    * The number of helpers (polydata mappers) drawing the blocks now.
    */
   int GetNumberOfHelpers();
+
+  /**
+   * Copy the lighting settings of another vtkPhongCompositePolyDataMapper, then what VTK's
+   * composite mapper copies.
+   */
+  void ShallowCopy(vtkAbstractMapper* mapper) override;
 
 #ifndef __VTK_WRAP__
   /**
@@ -190,15 +129,6 @@ protected:
    * warning.
    */
   void ComputeBounds() override;
-
-  int DebugView = vtkPhongPolyDataMapper::Final;
-  int DebugLightIndex = 0;
-  bool ShaderSpecialization = true;
-  bool InterpolatedDotProducts = true;
-  double LightCullingBound = 0.5 / 255.0;
-  bool ClosedSurfaceCulling = true;
-  int DepthPrePass = vtkPhongPolyDataMapper::DepthPrePassAutomatic;
-  bool DepthPrePassOcclusionCulling = true;
 
 private:
   vtkPhongCompositePolyDataMapper(const vtkPhongCompositePolyDataMapper&) = delete;

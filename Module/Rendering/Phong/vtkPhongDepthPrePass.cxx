@@ -6,9 +6,9 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
-#include "vtkPhongClosedSurface.h"
-#include "vtkPhongPolyDataMapper.h"
-#include "vtkPhongShaderPlanner.h"
+#include "vtkPhongLightGeometry.h"
+#include "vtkPhongLightingSettings.h"
+#include "vtkPhongScopedCulling.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtk_glew.h"
@@ -47,7 +47,7 @@ bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMa
   double triangles, double depthTriangles, int culledLights,
   const std::function<void(bool depthOnly)>& draw)
 {
-  using Mapper = vtkPhongPolyDataMapper;
+  using Mapper = vtkPhongLightingSettings;
   const bool possible = mode != Mapper::DepthPrePassOff && CanUse(ren, act, triangles);
   const bool counting =
     possible && mode == Mapper::DepthPrePassAutomatic && CanMeasure(mapper, act);
@@ -55,7 +55,7 @@ bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMa
   if (counting)
   {
     const int evaluatedLights =
-      static_cast<int>(vtkPhongShaderPlanner::SwitchedOnLights(ren).size()) - culledLights;
+      static_cast<int>(vtkPhongLightGeometry::SwitchedOn(ren).size()) - culledLights;
     used = this->Decide(evaluatedLights, triangles, depthTriangles, ren->GetRenderWindow());
   }
   if (used)
@@ -92,7 +92,7 @@ void vtkPhongDepthPrePass::DrawWithPrePass(
     // closed surface. Culling already on (the actor's own, or the mapper's of a closed
     // surface's hidden faces) applies to both draws.
     const bool alreadyCulling = state->GetEnumState(GL_CULL_FACE);
-    vtkPhongClosedSurface::ScopedCulling culling(ren, alreadyCulling ? 0 : GL_BACK);
+    vtkPhongScopedCulling culling(ren, alreadyCulling ? 0 : GL_BACK);
     draw(true);
   }
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);

@@ -6,7 +6,8 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkPhongMaterialUniforms.h"
+#include "vtkPhongLightGeometry.h"
+#include "vtkPhongMaterial.h"
 #include "vtkPhongProblemLog.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -129,10 +130,6 @@ int vtkPhongLightCulling::Cull(vtkRenderer* ren, vtkActor* actor, vtkProperty* f
   }
   double weights[3][3];
   MaterialWeights(front, back, weights);
-  vtkMatrix4x4* worldToView = ren->GetActiveCamera()->GetModelViewTransformMatrix();
-  vtkOpenGLRenderer* oglRenderer = vtkOpenGLRenderer::SafeDownCast(ren);
-  const bool userTransform = oglRenderer && oglRenderer->GetUserLightTransform();
-
   struct Candidate
   {
     vtkLight* Light;
@@ -146,24 +143,15 @@ int vtkPhongLightCulling::Cull(vtkRenderer* ren, vtkActor* actor, vtkProperty* f
     {
       // VTK moves headlights and camera lights by its user light transform (VR) in view
       // coordinates; those are left alone, and so are lights with values to report.
-      if ((userTransform && !light->LightTypeIsSceneLight()) || !IsPlain(light))
+      if (vtkPhongLightGeometry::IsUserTransformed(light, ren) || !IsPlain(light))
       {
         continue;
       }
-      double position[4] = { 0.0, 0.0, 0.0, 1.0 }, focal[4] = { 0.0, 0.0, 0.0, 1.0 };
-      light->GetTransformedPosition(position);
-      light->GetTransformedFocalPoint(focal);
-      double positionVC[4], focalVC[4];
-      worldToView->MultiplyPoint(position, positionVC);
-      worldToView->MultiplyPoint(focal, focalVC);
-      double axisVC[3];
-      for (int i = 0; i < 3; ++i)
-      {
-        positionVC[i] /= positionVC[3] != 0.0 ? positionVC[3] : 1.0;
-        focalVC[i] /= focalVC[3] != 0.0 ? focalVC[3] : 1.0;
-        axisVC[i] = focalVC[i] - positionVC[i];
-      }
-      const double b = ContributionBound(light, isSpot, positionVC, axisVC, boxVC, weights);
+      const vtkPhongLightGeometry geometry = vtkPhongLightGeometry::InView(light, ren);
+      const double noAxis[3] = { 0.0, 0.0, 0.0 };
+      const double* axisVC = geometry.HasDirection ? geometry.DirectionVC : noAxis;
+      const double b =
+        ContributionBound(light, isSpot, geometry.PositionVC, axisVC, boxVC, weights);
       if (std::isfinite(b))
       {
         candidates.push_back({ light, b });
@@ -229,7 +217,7 @@ double vtkPhongLightCulling::ContributionBound(vtkLight* light, bool isSpot,
 void vtkPhongLightCulling::MaterialWeights(
   vtkProperty* front, vtkProperty* back, double weights[3][3])
 {
-  const int model = vtkPhongMaterialUniforms::LightingModelOf(front);
+  const int model = vtkPhongMaterial::LightingModelOf(front);
   for (int term = 0; term < 3; ++term)
   {
     for (int c = 0; c < 3; ++c)
@@ -239,8 +227,8 @@ void vtkPhongLightCulling::MaterialWeights(
   }
   for (vtkProperty* material : { front, back })
   {
-    const double normalization = vtkPhongMaterialUniforms::LobeNormalization(
-      model, vtkPhongMaterialUniforms::ShininessOf(material));
+    const double normalization =
+      vtkPhongMaterial::LobeNormalization(model, vtkPhongMaterial::ShininessOf(material));
     const double k[3] = { Size(material->GetAmbient()), Size(material->GetDiffuse()),
       Size(material->GetSpecular()) * Size(normalization) };
     const double* colors[3] = { material->GetAmbientColor(), material->GetDiffuseColor(),

@@ -5,11 +5,10 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkPhongMaterialUniforms.h"
-#include "vtkPhongPolyDataMapper.h"
+#include "vtkPhongLightingSettings.h"
+#include "vtkPhongMaterial.h"
 #include "vtkPhongProblemLog.h"
 #include "vtkPhongProperty.h"
-#include "vtkPhongShaderPlanner.h"
 #include "vtkShaderProgram.h"
 #include "vtkTransform.h"
 
@@ -55,11 +54,8 @@ vtkPhongLightUniforms::vtkPhongLightUniforms(
   , ThePlan(plan)
   , Log(log)
 {
-  this->WorldToView = ren->GetActiveCamera()->GetModelViewTransformMatrix();
-  vtkOpenGLRenderer* oglRenderer = vtkOpenGLRenderer::SafeDownCast(ren);
-  this->UserTransform = oglRenderer ? oglRenderer->GetUserLightTransform() : nullptr;
   int index = 0;
-  for (vtkLight* light : vtkPhongShaderPlanner::SwitchedOnLights(ren))
+  for (vtkLight* light : vtkPhongLightGeometry::SwitchedOn(ren))
   {
     this->LightIndex[light] = index++;
   }
@@ -96,7 +92,7 @@ int vtkPhongLightUniforms::IndexOf(vtkLight* light) const
 vtkPhongLightUniforms::LightValues vtkPhongLightUniforms::ValuesOf(vtkLight* light)
 {
   LightValues values;
-  if (this->ThePlan.DebugView == vtkPhongPolyDataMapper::SingleLight &&
+  if (this->ThePlan.DebugView == vtkPhongLightingSettings::SingleLight &&
     light != this->ThePlan.DebugLight)
   {
     return values;
@@ -140,51 +136,10 @@ vtkPhongLightUniforms::RGB vtkPhongLightUniforms::ScaledColor(
 }
 
 //------------------------------------------------------------------------------
-vtkPhongLightUniforms::LightGeometry vtkPhongLightUniforms::GeometryOf(vtkLight* light) const
-{
-  double position[4] = { 0.0, 0.0, 0.0, 1.0 };
-  double focalPoint[4] = { 0.0, 0.0, 0.0, 1.0 };
-  light->GetTransformedPosition(position);
-  light->GetTransformedFocalPoint(focalPoint);
-  double positionVC[4];
-  this->WorldToView->MultiplyPoint(position, positionVC);
-  double direction[3];
-  vtkMath::Subtract(focalPoint, position, direction);
-  double directionVC[3];
-  for (int row = 0; row < 3; ++row)
-  {
-    directionVC[row] = this->WorldToView->GetElement(row, 0) * direction[0] +
-      this->WorldToView->GetElement(row, 1) * direction[1] +
-      this->WorldToView->GetElement(row, 2) * direction[2];
-  }
-  // VTK applies its user light transform (used in VR) to all but scene lights.
-  if (this->UserTransform && !light->LightTypeIsSceneLight())
-  {
-    this->UserTransform->TransformPoint(positionVC, positionVC);
-    this->UserTransform->TransformVector(directionVC, directionVC);
-  }
-  LightGeometry geometry;
-  for (int i = 0; i < 3; ++i)
-  {
-    geometry.PositionVC[i] = positionVC[i] / (positionVC[3] != 0.0 ? positionVC[3] : 1.0);
-  }
-  const double length = vtkMath::Norm(directionVC);
-  geometry.HasDirection = length > 0.0 && std::isfinite(length);
-  if (geometry.HasDirection)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      geometry.DirectionVC[i] = directionVC[i] / length;
-    }
-  }
-  return geometry;
-}
-
-//------------------------------------------------------------------------------
 // Ia, the renderer's ambient light (none in the single-light view).
 void vtkPhongLightUniforms::ReadSceneAmbient()
 {
-  if (this->ThePlan.DebugView == vtkPhongPolyDataMapper::SingleLight)
+  if (this->ThePlan.DebugView == vtkPhongLightingSettings::SingleLight)
   {
     return;
   }
@@ -215,7 +170,7 @@ void vtkPhongLightUniforms::UploadDirectional()
     {
       this->AmbientLight[c] += values.Ambient[c];
     }
-    const LightGeometry geometry = this->GeometryOf(light);
+    const vtkPhongLightGeometry geometry = vtkPhongLightGeometry::InView(light, this->Renderer);
     if (!geometry.HasDirection)
     {
       this->Log.Report(
@@ -269,7 +224,7 @@ void vtkPhongLightUniforms::UploadAmbient()
     // reports) them.
     vtkProperty* material = this->ThePlan.FrontMaterial;
     float term[3];
-    vtkPhongMaterialUniforms::FiniteProduct(
+    vtkPhongMaterial::FiniteProduct(
       material->GetAmbient(), material->GetAmbientColor(), this->AmbientLight, term);
     this->Program->SetUniform3f("phongAmbientTerm", term);
   }
@@ -300,7 +255,7 @@ vtkPhongLightUniforms::RGB vtkPhongLightUniforms::AttenuationOf(vtkLight* light)
 //------------------------------------------------------------------------------
 // A spot's axis, cone, falloff exponent and soft edge.
 void vtkPhongLightUniforms::AddSpot(
-  vtkLight* light, const LightGeometry& geometry, PositionalArrays& arrays)
+  vtkLight* light, const vtkPhongLightGeometry& geometry, PositionalArrays& arrays)
 {
   if (!geometry.HasDirection)
   {
@@ -348,7 +303,7 @@ void vtkPhongLightUniforms::UploadPositional(
   for (vtkLight* light : lights)
   {
     const LightValues values = this->ValuesOf(light);
-    const LightGeometry geometry = this->GeometryOf(light);
+    const vtkPhongLightGeometry geometry = vtkPhongLightGeometry::InView(light, this->Renderer);
     double positionVC[3];
     for (int i = 0; i < 3; ++i)
     {
@@ -430,7 +385,7 @@ void vtkPhongLightUniforms::UploadEmission()
   if (this->Program->IsUniformUsed("phongShininessBF"))
   {
     this->Program->SetUniformf("phongShininessBF",
-      static_cast<float>(std::min(vtkPhongMaterialUniforms::ShininessOf(plan.BackMaterial),
-        vtkPhongProblemLog::LargestValue)));
+      static_cast<float>(std::min(
+        vtkPhongMaterial::ShininessOf(plan.BackMaterial), vtkPhongProblemLog::LargestValue)));
   }
 }

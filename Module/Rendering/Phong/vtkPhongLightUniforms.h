@@ -2,7 +2,7 @@
  * @class   vtkPhongLightUniforms
  * @brief   uploads a plan's light values: directional, positional, ambient and emission
  *
- * One of the two uniform halves of vtkPhongShaderBuilder (plan, template, uniforms). Light
+ * One of the two uniform halves of the shader path (plan, template, uniforms). Light
  * colours go up premultiplied by the light's intensity; directions and positions in view
  * coordinates, computed in double precision so far-away scenes lose nothing before the final
  * cast to float; the ambient light Ia plus the directional lights' ambient colours as one sum.
@@ -11,28 +11,30 @@
  *
  * Private to the module.
  *
- * @sa vtkPhongShaderBuilder vtkPhongMaterialUniforms
+ * @sa vtkPhongMapperCore vtkPhongMaterialUniforms
  */
 
 #ifndef vtkPhongLightUniforms_h
 #define vtkPhongLightUniforms_h
 
-#include "vtkPhongShaderBuilder.h" // for Plan
+#include "vtkPhongLightGeometry.h" // for vtkPhongLightGeometry
+#include "vtkPhongShaderPlan.h"    // for the plan
 
 #include <array>  // for std::array
 #include <map>    // for std::map
 #include <string> // for std::string
 #include <vector> // for std::vector
 
-class vtkMatrix4x4;
+class vtkLight;
 class vtkPhongProblemLog;
+class vtkProperty;
+class vtkRenderer;
 class vtkShaderProgram;
-class vtkTransform;
 
 class vtkPhongLightUniforms
 {
 public:
-  using Plan = vtkPhongShaderBuilder::Plan;
+  using Plan = vtkPhongShaderPlan;
 
   vtkPhongLightUniforms(
     vtkShaderProgram* program, vtkRenderer* ren, const Plan& plan, vtkPhongProblemLog& log);
@@ -50,15 +52,6 @@ private:
     RGB Specular = { 0.f, 0.f, 0.f };
   };
 
-  // A light's position and direction (from the light towards its focal point) in view
-  // coordinates.
-  struct LightGeometry
-  {
-    double PositionVC[3] = { 0.0, 0.0, 0.0 };
-    double DirectionVC[3] = { 0.0, 0.0, -1.0 };
-    bool HasDirection = true;
-  };
-
   // The uniform arrays of one positional light kind, a light after another.
   struct PositionalArrays
   {
@@ -68,7 +61,6 @@ private:
 
   LightValues ValuesOf(vtkLight* light);
   RGB ScaledColor(vtkLight* light, const double* color, double intensity, const char* which);
-  LightGeometry GeometryOf(vtkLight* light) const;
   int IndexOf(vtkLight* light) const;
   void ReadSceneAmbient();
   void UploadDirectional();
@@ -76,7 +68,7 @@ private:
     const std::vector<float>& specular);
   void UploadAmbient();
   RGB AttenuationOf(vtkLight* light);
-  void AddSpot(vtkLight* light, const LightGeometry& geometry, PositionalArrays& arrays);
+  void AddSpot(vtkLight* light, const vtkPhongLightGeometry& geometry, PositionalArrays& arrays);
   void UploadPositional(const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot);
   void UploadSpotArrays(const std::string& prefix, const PositionalArrays& arrays);
   void UploadEmission();
@@ -85,9 +77,7 @@ private:
   vtkRenderer* Renderer;
   const Plan& ThePlan;
   vtkPhongProblemLog& Log;
-  vtkMatrix4x4* WorldToView = nullptr;
-  vtkTransform* UserTransform = nullptr; ///< VTK's user light transform (VR), or none
-  std::map<vtkLight*, int> LightIndex;   ///< as the renderer lists its lights, for messages
+  std::map<vtkLight*, int> LightIndex; ///< as the renderer lists its lights, for messages
   double AmbientLight[3] = { 0.0, 0.0, 0.0 };
 };
 

@@ -2,10 +2,17 @@
 
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
+#include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkPhongCompatibility.h"
+#include "vtkPhongLightUniforms.h"
+#include "vtkPhongMaterialUniforms.h"
+#include "vtkPhongProblemLog.h"
+#include "vtkPhongShaderPlanner.h"
+#include "vtkPhongShaderTemplate.h"
+#include "vtkPhongShadowMaps.h"
 #include "vtkShaderProgram.h"
 
 #include "vtkActor.h"
@@ -26,10 +33,16 @@ vtkStandardNewMacro(vtkPhongMapperCore);
 
 struct vtkPhongMapperCore::Internals
 {
-  vtkNew<vtkPhongShaderBuilder> Builder;
+  // Bad parameters met while planning and uploading, reported once by ReportProblems.
+  vtkPhongProblemLog Log;
+  // The all-features variant (no specialization) stands in lights the scene lacks by these,
+  // of zero intensity.
+  vtkNew<vtkLight> PlaceholderDirectional;
+  vtkNew<vtkLight> PlaceholderPoint;
+  vtkNew<vtkLight> PlaceholderSpot;
   // The plan of each primitive (points, lines, polygons, strips), made afresh every frame
   // by PlanPrimitive and used until the next one.
-  std::map<const vtkOpenGLHelper*, vtkPhongShaderBuilder::Plan> Plans;
+  std::map<const vtkOpenGLHelper*, vtkPhongShaderPlan> Plans;
   std::set<std::string> Signatures;
   // Variants whose shader failed to compile: drawn with VTK's lighting instead.
   std::set<std::string> FailedSignatures;
@@ -70,6 +83,18 @@ struct vtkPhongMapperCore::Internals
 vtkPhongMapperCore::vtkPhongMapperCore()
   : Internal(new Internals)
 {
+  Internals& internal = *this->Internal;
+  internal.PlaceholderDirectional->SetIntensity(0.0);
+  internal.PlaceholderPoint->SetIntensity(0.0);
+  internal.PlaceholderPoint->PositionalOn();
+  internal.PlaceholderPoint->SetConeAngle(180.0);
+  internal.PlaceholderSpot->SetIntensity(0.0);
+  internal.PlaceholderSpot->PositionalOn();
+  internal.PlaceholderSpot->SetConeAngle(45.0);
+  internal.PlaceholderSpot->SetExponent(2.0);
+  internal.PlaceholderSpot->SetAttenuationValues(1.0, 0.1, 0.1);
+  internal.PlaceholderPoint->SetAttenuationValues(1.0, 0.1, 0.1);
+  internal.PlaceholderPoint->SetAmbientColor(1.0, 1.0, 1.0);
 }
 
 //------------------------------------------------------------------------------
@@ -77,13 +102,18 @@ vtkPhongMapperCore::~vtkPhongMapperCore() = default;
 
 //------------------------------------------------------------------------------
 bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRenderer* ren,
-  vtkActor* act, const vtkPhongShaderBuilder::PrimitiveState& state)
+  vtkActor* act, const vtkPhongPrimitiveState& state)
 {
-  vtkPhongShaderBuilder::Plan plan =
-    this->Internal->Builder->MakePlan(ren, act, state, this->Options);
+  Internals& internal = *this->Internal;
+  vtkPhongShaderPlanner::PlaceholderLights placeholders;
+  placeholders.Directional = internal.PlaceholderDirectional;
+  placeholders.Point = internal.PlaceholderPoint;
+  placeholders.Spot = internal.PlaceholderSpot;
+  vtkPhongShaderPlan plan =
+    vtkPhongShaderPlanner(placeholders, internal.Log).MakePlan(ren, act, state, this->Options);
   if (plan.Handled && this->Internal->FailedSignatures.count(plan.Signature))
   {
-    plan = vtkPhongShaderBuilder::Plan();
+    plan = vtkPhongShaderPlan();
   }
   this->Internal->CulledLights = plan.CulledLights;
   auto& current = this->Internal->Plans[&cellBO];
@@ -192,7 +222,7 @@ void vtkPhongMapperCore::FallBackToVTK(const vtkOpenGLHelper* cellBO, vtkObject*
   // vtkShaderProgram has already printed the numbered source and the log.
   const std::string signature = this->Internal->Plans[cellBO].Signature;
   this->Internal->FailedSignatures.insert(signature);
-  this->Internal->Plans[cellBO] = vtkPhongShaderBuilder::Plan();
+  this->Internal->Plans[cellBO] = vtkPhongShaderPlan();
   vtkErrorWithObjectMacro(reporter,
     "The lighting shader variant ["
       << signature
@@ -250,7 +280,7 @@ bool vtkPhongMapperCore::EndUpdateShaders(
   Internals& internal = *this->Internal;
   const bool built = internal.BuiltShaders;
   const bool failed = built && this->CheckNewProgram(cellBO, reporter);
-  const vtkPhongShaderBuilder::Plan& plan = internal.Plans[&cellBO];
+  const vtkPhongShaderPlan& plan = internal.Plans[&cellBO];
   if (!failed && plan.Handled && !plan.DepthOnly) // the pre-pass's one program is not counted
   {
     this->UseProgram(cellBO.Program, ren);
@@ -324,7 +354,7 @@ bool vtkPhongMapperCore::CheckNewProgram(vtkOpenGLHelper& cellBO, vtkObject* rep
 
   // The depth pre-pass's program (once per mapper) is neither a lighting variant nor counted
   // as a build: the statistics follow the lighting.
-  const vtkPhongShaderBuilder::Plan& plan = internal.Plans[&cellBO];
+  const vtkPhongShaderPlan& plan = internal.Plans[&cellBO];
   if (plan.Handled && !plan.DepthOnly)
   {
     internal.Signatures.insert(plan.Signature);
@@ -356,25 +386,28 @@ bool vtkPhongMapperCore::CheckNewProgram(vtkOpenGLHelper& cellBO, vtkObject* rep
 void vtkPhongMapperCore::ReplaceShaderLight(
   std::map<vtkShader::Type, vtkShader*>& shaders, const vtkOpenGLHelper* cellBO)
 {
-  this->Internal->Builder->ReplaceShaderValues(shaders, this->Internal->Plans[cellBO]);
+  vtkPhongShaderTemplate(this).Substitute(shaders, this->Internal->Plans[cellBO]);
 }
 
 //------------------------------------------------------------------------------
 void vtkPhongMapperCore::SetLightUniforms(vtkOpenGLHelper& cellBO, vtkRenderer* ren)
 {
-  this->Internal->Builder->SetLightUniforms(cellBO.Program, ren, this->Internal->Plans[&cellBO]);
+  const vtkPhongShaderPlan& plan = this->Internal->Plans[&cellBO];
+  vtkPhongLightUniforms(cellBO.Program, ren, plan, this->Internal->Log).Upload();
+  vtkPhongShadowMaps::UploadLightIndices(cellBO.Program, ren, plan);
 }
 
 //------------------------------------------------------------------------------
 void vtkPhongMapperCore::SetMaterialUniforms(vtkOpenGLHelper& cellBO)
 {
-  this->Internal->Builder->SetMaterialUniforms(cellBO.Program, this->Internal->Plans[&cellBO]);
+  vtkPhongMaterialUniforms(cellBO.Program, this->Internal->Plans[&cellBO], this->Internal->Log)
+    .Upload();
 }
 
 //------------------------------------------------------------------------------
 void vtkPhongMapperCore::ReportProblems(vtkObject* reporter)
 {
-  const std::string problems = this->Internal->Builder->TakeProblems();
+  const std::string problems = this->Internal->Log.Take();
   if (problems != this->Internal->ReportedProblems)
   {
     if (!problems.empty())

@@ -3,24 +3,24 @@
  * @brief   the lighting half of a vtkPhong mapper, shared by every mapper entry point
  *
  * vtkPhongMapperCore carries everything a mapper does with vtkPhong's lighting beyond VTK's
- * own polydata mapper: the plan of each primitive (vtkPhongShaderBuilder), the bookkeeping of
+ * own polydata mapper: the plan of each primitive (vtkPhongShaderPlanner), the bookkeeping of
  * shader variants (signatures, compile count, build time, the last sources), the fallback to
  * VTK's lighting when a variant fails to compile, the cached scan for unusable normals, and
- * the reporting of bad parameters. vtkPhongPolyDataMapper and the composite mapper's helper
- * (vtkPhongCompositeMapperHelper) each own one and forward their shader overrides to it, so
- * the two entry points share one implementation; only reading the stock mapper's protected
- * state (PrimitiveState) is theirs.
+ * the reporting of bad parameters. It calls the shader path's parts directly: the planner,
+ * the template (vtkPhongShaderTemplate) and the uniforms (vtkPhongLightUniforms,
+ * vtkPhongMaterialUniforms, vtkPhongShadowMaps). Every vtkPhongLightingMapper (the polydata
+ * mapper, each block mapper of the composite one) owns one.
  *
- * Not wrapped: the mappers are the Python-facing API.
+ * Private to the rendering module: the mappers are the API.
  *
- * @sa vtkPhongShaderBuilder vtkPhongPolyDataMapper vtkPhongCompositePolyDataMapper
+ * @sa vtkPhongLightingMapper vtkPhongShaderPlanner vtkPhongShaderTemplate
  */
 
 #ifndef vtkPhongMapperCore_h
 #define vtkPhongMapperCore_h
 
 #include "vtkObject.h"
-#include "vtkPhongShaderBuilder.h"   // for Plan, PrimitiveState, Options
+#include "vtkPhongShaderPlan.h"      // for the plan
 #include "vtkRenderingPhongModule.h" // for export macro
 #include "vtkShader.h"               // for vtkShader::Type
 #include "vtkSmartPointer.h"         // for vtkSmartPointer
@@ -34,6 +34,7 @@ class vtkActor;
 class vtkDataArray;
 class vtkOpenGLHelper;
 class vtkRenderer;
+class vtkShaderProgram;
 
 class VTKRENDERINGPHONG_EXPORT vtkPhongMapperCore : public vtkObject
 {
@@ -45,14 +46,14 @@ public:
   /**
    * The mapper's settings that shape the shader (debug view, light index, specialization).
    */
-  vtkPhongShaderBuilder::Options Options;
+  vtkPhongPlanOptions Options;
 
   /**
    * Plan the primitive about to be drawn (from GetNeedToRebuildShaders). Returns true when
    * its lighting signature changed, i.e. the shader must be rebuilt.
    */
   bool PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act,
-    const vtkPhongShaderBuilder::PrimitiveState& state);
+    const vtkPhongPrimitiveState& state);
 
   /**
    * Whether vtkPhong lights this primitive (false: VTK's own lighting code draws it).

@@ -1,5 +1,6 @@
 #include "vtkPhongMaterialUniforms.h"
 
+#include "vtkPhongMaterial.h"
 #include "vtkPhongProblemLog.h"
 #include "vtkPhongProperty.h"
 #include "vtkProperty.h"
@@ -15,51 +16,6 @@ vtkPhongMaterialUniforms::vtkPhongMaterialUniforms(
   , ThePlan(plan)
   , Log(log)
 {
-}
-
-//------------------------------------------------------------------------------
-double vtkPhongMaterialUniforms::ShininessOf(vtkProperty* material)
-{
-  auto* phong = vtkPhongProperty::SafeDownCast(material);
-  return phong ? phong->GetShininess() : material->GetSpecularPower();
-}
-
-//------------------------------------------------------------------------------
-int vtkPhongMaterialUniforms::LightingModelOf(vtkProperty* material)
-{
-  auto* phong = vtkPhongProperty::SafeDownCast(material);
-  return phong ? phong->GetLightingModel() : vtkPhongProperty::Phong;
-}
-
-//------------------------------------------------------------------------------
-double vtkPhongMaterialUniforms::LobeNormalization(int lightingModel, double shininess)
-{
-  switch (lightingModel)
-  {
-    case vtkPhongProperty::NormalizedPhong:
-      return (shininess + 2.0) / 2.0;
-    case vtkPhongProperty::NormalizedBlinnPhong:
-      return (shininess + 8.0) / 8.0;
-    default:
-      return 1.0;
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongMaterialUniforms::FiniteProduct(
-  double coefficient, const double color[3], const double scale[3], float product[3])
-{
-  // Bad values were reported where the material's own uniforms were checked.
-  auto usable = [](double value)
-  {
-    const double largest = vtkPhongProblemLog::LargestValue;
-    return std::isfinite(value) ? std::min(std::max(value, -largest), largest) : 0.0;
-  };
-  const double k = usable(coefficient);
-  for (int c = 0; c < 3; ++c)
-  {
-    product[c] = static_cast<float>(k * usable(color[c]) * scale[c]);
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -81,9 +37,9 @@ void vtkPhongMaterialUniforms::UploadSide(vtkProperty* material, const char* suf
   this->Side = suffix;
   this->SideName = this->Side.empty() ? "front" : "back";
   this->Report = report;
-  const double shininess = ShininessOf(material);
-  const double normalization =
-    LobeNormalization(LightingModelOf(this->ThePlan.FrontMaterial), shininess);
+  const double shininess = vtkPhongMaterial::ShininessOf(material);
+  const double normalization = vtkPhongMaterial::LobeNormalization(
+    vtkPhongMaterial::LightingModelOf(this->ThePlan.FrontMaterial), shininess);
 
   const RGB ambientColor = this->CheckedColor(material->GetAmbientColor(), 1.0, "ambient");
   const RGB diffuseColor = this->CheckedColor(material->GetDiffuseColor(), 1.0, "diffuse");
@@ -154,14 +110,15 @@ float vtkPhongMaterialUniforms::CheckedCoefficient(double value, const char* whi
 void vtkPhongMaterialUniforms::UploadProducts()
 {
   vtkProperty* front = this->ThePlan.FrontMaterial;
-  const double specularScale = LobeNormalization(LightingModelOf(front), ShininessOf(front));
+  const double specularScale = vtkPhongMaterial::LobeNormalization(
+    vtkPhongMaterial::LightingModelOf(front), vtkPhongMaterial::ShininessOf(front));
   auto product = [&](const char* name, double coefficient, const double* color, double scale)
   {
     if (this->Program->IsUniformUsed(name))
     {
       const double scales[3] = { scale, scale, scale };
       float value[3];
-      FiniteProduct(coefficient, color, scales, value);
+      vtkPhongMaterial::FiniteProduct(coefficient, color, scales, value);
       this->Program->SetUniform3f(name, value);
     }
   };

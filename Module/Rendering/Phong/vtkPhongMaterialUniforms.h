@@ -2,7 +2,7 @@
  * @class   vtkPhongMaterialUniforms
  * @brief   uploads a plan's material values: the contract's, where VTK's differ
  *
- * One of the two uniform halves of vtkPhongShaderBuilder (plan, template, uniforms). VTK's
+ * One of the two uniform halves of the shader path (plan, template, uniforms). VTK's
  * mapper has already uploaded the material of each side (SetPropertyShaderParameters); this
  * replaces what the lighting contract defines otherwise: the shininess unclamped (VTK clamps
  * SpecularPower to 128), the specular colour times the lobe's energy normalization, non-finite
@@ -11,49 +11,28 @@
  *
  * Private to the module.
  *
- * @sa vtkPhongShaderBuilder vtkPhongLightUniforms
+ * @sa vtkPhongMapperCore vtkPhongLightUniforms
  */
 
 #ifndef vtkPhongMaterialUniforms_h
 #define vtkPhongMaterialUniforms_h
 
-#include "vtkPhongShaderBuilder.h" // for Plan
+#include "vtkPhongShaderPlan.h" // for the plan
 
 #include <array> // for std::array
 
 class vtkPhongProblemLog;
+class vtkProperty;
 class vtkShaderProgram;
 
 class vtkPhongMaterialUniforms
 {
 public:
-  using Plan = vtkPhongShaderBuilder::Plan;
+  using Plan = vtkPhongShaderPlan;
 
   vtkPhongMaterialUniforms(vtkShaderProgram* program, const Plan& plan, vtkPhongProblemLog& log);
 
   void Upload();
-
-  /**
-   * vtkPhongProperty's shininess (unclamped), else VTK's specular power.
-   */
-  static double ShininessOf(vtkProperty* material);
-
-  /**
-   * vtkPhongProperty's lighting model, else vtkPhongProperty::Phong (VTK's lobe).
-   */
-  static int LightingModelOf(vtkProperty* material);
-
-  /**
-   * The energy normalization of the lobe, folded into the specular colour on the CPU.
-   */
-  static double LobeNormalization(int lightingModel, double shininess);
-
-  /**
-   * product = coefficient * color * scale per channel, non-finite coefficients and colour
-   * components taken as 0.
-   */
-  static void FiniteProduct(
-    double coefficient, const double color[3], const double scale[3], float product[3]);
 
 private:
   using RGB = std::array<float, 3>;

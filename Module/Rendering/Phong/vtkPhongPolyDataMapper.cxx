@@ -13,13 +13,11 @@
 #include "vtkOpenGLShaderProperty.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPhongBufferBlocks.h"
 #include "vtkPhongClampedSetter.h"
-#include "vtkPhongClosedSurface.h"
-#include "vtkPhongCompatibility.h"
-#include "vtkPhongDepthPrePass.h"
+#include "vtkPhongLightingMapper.txx"
 #include "vtkPhongMapperCore.h"
 #include "vtkPhongValidBlocks.h"
-#include "vtkPhongVisibleClusters.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -27,13 +25,17 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
 #include "vtkUnsignedCharArray.h"
+
 #include "vtk_glew.h"
+#include <algorithm>
+
+template class vtkPhongLightingMapper<vtkOpenGLPolyDataMapper>;
 
 vtkStandardNewMacro(vtkPhongPolyDataMapper);
 
 struct vtkPhongPolyDataMapper::Internals
 {
-  vtkNew<vtkPhongMapperCore> Core;
+  vtkPhongLightingSettingsHolder Settings;
   vtkNew<vtkOpenMeshNormals> Normals;
   // The mapper named vtkOriginalPointIds for picking itself (and may unname it).
   bool NamedPointIds = false;
@@ -41,13 +43,6 @@ struct vtkPhongPolyDataMapper::Internals
   vtkPhongValidBlocks ValidInputs;
   // The input drawn before the normals filter replaced it (see StockNeedToRebuildShaders).
   vtkPolyData* InputWithoutNormals = nullptr;
-  // The depth pass of the pre-pass is being drawn (its program computes no light).
-  bool DrawingDepthOnly = false;
-  vtkPhongDepthPrePass PrePass;
-  // The triangles the depth pass draws: those seen in the last frame.
-  vtkPhongVisibleClusters Clusters;
-  // Whether the triangles are closed surfaces, whose back faces can be culled.
-  vtkPhongClosedSurface ClosedSurface;
 };
 
 //------------------------------------------------------------------------------
@@ -60,15 +55,36 @@ vtkPhongPolyDataMapper::vtkPhongPolyDataMapper()
 vtkPhongPolyDataMapper::~vtkPhongPolyDataMapper() = default;
 
 //------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::SetLightCullingBound(double bound)
+vtkPhongLightingSettings* vtkPhongPolyDataMapper::GetLightingSettings()
 {
-  vtkPhongSetClamped(this, "LightCullingBound", this->LightCullingBound, bound, 0.0, 1.0e9);
+  return this->Internal->Settings.Get();
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::SetLightingSettings(vtkPhongLightingSettings* settings)
+{
+  if (this->Internal->Settings.Set(settings, this))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkPhongPolyDataMapper::GetMTime()
+{
+  return this->Internal->Settings.MTime(this->Superclass::GetMTime());
+}
+
+//------------------------------------------------------------------------------
+vtkPhongLightingSettings* vtkPhongPolyDataMapper::LightingSettings()
+{
+  return this->Internal->Settings.Get();
 }
 
 //------------------------------------------------------------------------------
 int vtkPhongPolyDataMapper::GetNumberOfCulledLights()
 {
-  return this->Internal->Core->GetNumberOfCulledLights();
+  return this->GetCore()->GetNumberOfCulledLights();
 }
 
 //------------------------------------------------------------------------------
@@ -99,122 +115,57 @@ void vtkPhongPolyDataMapper::ComputeBounds()
 }
 
 //------------------------------------------------------------------------------
-const char* vtkPhongPolyDataMapper::GetDebugViewAsString()
-{
-  switch (this->DebugView)
-  {
-    case AmbientTerm:
-      return "AmbientTerm";
-    case DiffuseTerm:
-      return "DiffuseTerm";
-    case SpecularTerm:
-      return "SpecularTerm";
-    case EmissionTerm:
-      return "EmissionTerm";
-    case ShadingNormal:
-      return "ShadingNormal";
-    case SingleLight:
-      return "SingleLight";
-    case PositionVC:
-      return "PositionVC";
-    case NormalVC:
-      return "NormalVC";
-    case Final:
-    default:
-      return "Final";
-  }
-}
-
-//------------------------------------------------------------------------------
 int vtkPhongPolyDataMapper::GetNumberOfCompiledShaderPrograms()
 {
-  return this->Internal->Core->GetNumberOfCompiledPrograms();
+  return this->GetCore()->GetNumberOfCompiledPrograms();
 }
 
 //------------------------------------------------------------------------------
 int vtkPhongPolyDataMapper::GetNumberOfReleasedShaderPrograms()
 {
-  return this->Internal->Core->GetNumberOfReleasedPrograms();
+  return this->GetCore()->GetNumberOfReleasedPrograms();
 }
 
 //------------------------------------------------------------------------------
 int vtkPhongPolyDataMapper::GetShaderCompileCount()
 {
-  return this->Internal->Core->GetShaderCompileCount();
+  return this->GetCore()->GetShaderCompileCount();
 }
 
 //------------------------------------------------------------------------------
 int vtkPhongPolyDataMapper::GetNumberOfShaderVariants()
 {
-  return this->Internal->Core->GetNumberOfShaderVariants();
+  return this->GetCore()->GetNumberOfShaderVariants();
 }
 
 //------------------------------------------------------------------------------
 double vtkPhongPolyDataMapper::GetLastShaderBuildTime()
 {
-  return this->Internal->Core->GetLastShaderBuildTime();
+  return this->GetCore()->GetLastShaderBuildTime();
 }
 
 //------------------------------------------------------------------------------
 const char* vtkPhongPolyDataMapper::GetLastShaderSignature()
 {
-  return this->Internal->Core->GetLastShaderSignature().c_str();
+  return this->GetCore()->GetLastShaderSignature().c_str();
 }
 
 //------------------------------------------------------------------------------
 const char* vtkPhongPolyDataMapper::GetLastVertexShaderSource()
 {
-  return this->Internal->Core->GetLastVertexShaderSource().c_str();
+  return this->GetCore()->GetLastVertexShaderSource().c_str();
 }
 
 //------------------------------------------------------------------------------
 const char* vtkPhongPolyDataMapper::GetLastFragmentShaderSource()
 {
-  return this->Internal->Core->GetLastFragmentShaderSource().c_str();
+  return this->GetCore()->GetLastFragmentShaderSource().c_str();
 }
 
 //------------------------------------------------------------------------------
 const char* vtkPhongPolyDataMapper::GetLastGeometryShaderSource()
 {
-  return this->Internal->Core->GetLastGeometryShaderSource().c_str();
-}
-
-//------------------------------------------------------------------------------
-bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  // The stock test first: it also refreshes this primitive's light complexity.
-  const bool rebuild = this->StockNeedToRebuildShaders(cellBO, ren, act);
-
-  // What only the stock mapper's protected state tells (vtkPhongCompositeMapperHelper reads
-  // the same for all its blocks).
-  vtkPhongMapperCore* core = this->Internal->Core;
-  vtkPhongShaderBuilder::PrimitiveState state;
-  state.LightComplexity = this->PrimitiveInfo[&cellBO].LastLightComplexity;
-  state.IsTriangles =
-    cellBO.PrimitiveType == PrimitiveTris || cellBO.PrimitiveType == PrimitiveTriStrips;
-  state.HasPointNormals = this->VBOs->GetNumberOfComponents("normalMC") == 3;
-  state.HasCellNormals = this->HaveCellNormals;
-  state.NormalsMayBeInvalid = state.HasPointNormals
-    ? core->HasUnusableVectors(this->CurrentInput->GetPointData()->GetNormals())
-    : state.HasCellNormals &&
-      core->HasUnusableVectors(this->CurrentInput->GetCellData()->GetNormals());
-  state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
-  state.DrawingEdges = this->DrawingEdges(ren, act);
-  state.HasGeometryShader = state.DrawingEdges || this->HaveWideLines(ren, act) ||
-    act->GetShaderProperty()->HasGeometryShaderCode();
-  state.DrawingVertices = this->DrawingVertices;
-  state.DrawingSelection = this->DrawingSelection;
-  state.HasUserShaderCode = vtkPhongClosedSurface::HasShaderCode(act, this->LegacyShaders());
-
-  core->Options.DebugView = this->DebugView;
-  core->Options.DebugLightIndex = this->DebugLightIndex;
-  core->Options.Specialize = this->ShaderSpecialization;
-  core->Options.InterpolatedDots = this->InterpolatedDotProducts;
-  core->Options.LightCullingBound = this->LightCullingBound;
-  core->Options.DepthOnly = this->Internal->DrawingDepthOnly;
-  core->MaximumNumberOfPrograms = this->MaximumNumberOfShaderPrograms;
-  return core->PlanPrimitive(cellBO, ren, act, state) || rebuild;
+  return this->GetCore()->GetLastGeometryShaderSource().c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -231,70 +182,9 @@ bool vtkPhongPolyDataMapper::StockNeedToRebuildShaders(
   {
     this->CurrentInput = this->Internal->InputWithoutNormals;
   }
-  const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  const bool rebuild = this->Superclass::StockNeedToRebuildShaders(cellBO, ren, act);
   this->CurrentInput = drawn;
   return rebuild;
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::BuildShaders(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
-{
-  this->Superclass::BuildShaders(shaders, ren, act);
-  this->Internal->Core->FinishBuild(
-    shaders, this->LastBoundBO, ren, act, this,
-    [&]() { this->Superclass::BuildShaders(shaders, ren, act); },
-    [&]()
-    {
-      this->GetShaderTemplate(shaders, ren, vtkPhongMapperCore::TemplateActor(act));
-      this->ReplaceShaderValues(shaders, ren, act);
-    });
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  this->Internal->Core->BeginUpdateShaders();
-  this->Superclass::UpdateShaders(cellBO, ren, act);
-  if (this->Internal->Core->EndUpdateShaders(cellBO, ren, this))
-  {
-    this->Superclass::UpdateShaders(cellBO, ren, act); // now planned with VTK's lighting
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::ReplaceShaderLight(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
-{
-  if (!this->Internal->Core->Handles(this->LastBoundBO))
-  {
-    this->Superclass::ReplaceShaderLight(shaders, ren, act);
-    return;
-  }
-  this->Internal->Core->ReplaceShaderLight(shaders, this->LastBoundBO);
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::SetLightingShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  if (!this->Internal->Core->Handles(&cellBO))
-  {
-    this->Superclass::SetLightingShaderParameters(cellBO, ren, act);
-    return;
-  }
-  this->Internal->Core->SetLightUniforms(cellBO, ren);
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::SetPropertyShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  this->Superclass::SetPropertyShaderParameters(cellBO, ren, act);
-  if (this->Internal->Core->Handles(&cellBO))
-  {
-    this->Internal->Core->SetMaterialUniforms(cellBO);
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -361,159 +251,75 @@ vtkUnsignedCharArray* vtkPhongPolyDataMapper::MapScalars(double alpha, int& cell
 }
 
 //------------------------------------------------------------------------------
-// With the back faces culled when none can be seen (vtkPhongClosedSurface); both the depth
-// pass and the lit draw then leave them out.
-void vtkPhongPolyDataMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
+std::vector<vtkPolyData*> vtkPhongPolyDataMapper::LitBlocks()
 {
-  const unsigned int hiddenFaces = this->HiddenFaces(ren, act);
-  this->UsedClosedSurfaceCulling = hiddenFaces != 0;
-  vtkPhongClosedSurface::ScopedCulling culling(ren, hiddenFaces);
-  this->DrawSurfaces(ren, act);
-}
-
-//------------------------------------------------------------------------------
-// The mapper's own shader replacements (VTK before 9.2), or nullptr.
-vtkShaderProperty* vtkPhongPolyDataMapper::LegacyShaders() const
-{
-#if VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS
-  return this->LegacyShaderProperty;
-#else
-  return nullptr;
-#endif
-}
-
-//------------------------------------------------------------------------------
-// The faces to cull, or 0: nothing drawn may show a back face other than through the closed
-// surfaces (a shader replacement, a clipping plane's cut, a texture's transparent texel, an
-// edge over a silhouette could), then the surfaces and the view (vtkPhongClosedSurface).
-unsigned int vtkPhongPolyDataMapper::HiddenFaces(vtkRenderer* ren, vtkActor* act)
-{
-  if (!this->ClosedSurfaceCulling || !this->CurrentInput ||
-    !vtkPhongClosedSurface::DrawsOnlySurfaces(
-      ren, act, this->Primitives, this->LegacyShaders(), this->GetNumberOfClippingPlanes()))
+  std::vector<vtkPolyData*> blocks;
+  if (this->CurrentInput)
   {
-    return 0;
+    blocks.push_back(this->CurrentInput);
   }
-  vtkPhongClosedSurface& surface = this->Internal->ClosedSurface;
-  surface.Update(
-    this->Primitives[PrimitiveTris].IBO, this->CurrentInput, this->VBOBuildTime.GetMTime());
-  return surface.HiddenFaces(ren, act, this->CurrentInput->GetBounds());
+  return blocks;
 }
 
 //------------------------------------------------------------------------------
-// Plainly or with the depth pre-pass (vtkPhongDepthPrePass decides and draws), whose depth
-// pass may leave out the triangles hidden in the last frame (vtkPhongVisibleClusters).
-void vtkPhongPolyDataMapper::DrawSurfaces(vtkRenderer* ren, vtkActor* act)
+bool vtkPhongPolyDataMapper::BlocksInBuffer(std::vector<vtkPhongBufferBlock>& blocks)
 {
-  vtkPolyData* input = this->CurrentInput;
-  const double triangles =
-    input ? static_cast<double>(input->GetNumberOfPolys() + input->GetNumberOfStrips()) : 0.0;
-  vtkPhongVisibleClusters& clusters = this->Internal->Clusters;
-  const bool culling = this->CanCullDepthPass(ren, act);
-  // Culled, the depth pass draws the seen clusters' triangles and nothing else (VTK's
-  // triangulated polygons, where `triangles` counts cells).
-  const double depthTriangles =
-    culling && clusters.GetNumberOfTriangles() > 0 ? clusters.CollectVisibility() : triangles;
-  this->DepthPassTriangles = 0.0;
-  this->UsedDepthPrePass = this->Internal->PrePass.Draw(this->DepthPrePass, ren, act, this,
-    triangles, depthTriangles, this->GetNumberOfCulledLights(),
-    [&](bool depthOnly)
-    {
-      // VTK's draw advances the primitive id offset of cell colours and normals as it goes:
-      // the lit draw must start where the depth pass did.
-      const int primitiveIdOffset = this->PrimitiveIDOffset;
-      this->Internal->DrawingDepthOnly = depthOnly;
-      if (depthOnly)
-      {
-        const bool culled = culling &&
-          clusters.Update(ren->GetRenderWindow(), this->Primitives[PrimitiveTris].IBO, input,
-            this->VBOBuildTime.GetMTime());
-        this->DrawDepthPass(ren, act, culled);
-        this->DepthPassTriangles = culled ? clusters.GetNumberOfTrianglesDrawn() : triangles;
-        this->PrimitiveIDOffset = primitiveIdOffset;
-      }
-      else
-      {
-        this->Superclass::RenderPieceDraw(ren, act);
-      }
-      this->Internal->DrawingDepthOnly = false;
-    });
-}
-
-//------------------------------------------------------------------------------
-// The depth pass is VTK's draw with the depth-only program; culled, the triangles are those
-// of the clusters seen in the last frame, and a share of the hidden ones.
-void vtkPhongPolyDataMapper::DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool culled)
-{
-  if (!culled)
+  if (this->CurrentInput)
   {
-    this->Superclass::RenderPieceDraw(ren, act);
-    return;
+    blocks.push_back({ this->CurrentInput, 0 });
   }
-  this->DrawingVertices = false;
-  this->DrawingSelection = false;
-  this->UpdateShaders(this->Primitives[PrimitiveTris], ren, act);
-  this->Internal->Clusters.Draw(ren, act);
+  return !blocks.empty();
 }
 
 //------------------------------------------------------------------------------
-bool vtkPhongPolyDataMapper::CanCullDepthPass(vtkRenderer* ren, vtkActor* act)
+void vtkPhongPolyDataMapper::SurfaceBounds(double bounds[6])
 {
-  return this->DepthPrePassOcclusionCulling && this->DepthPrePass != DepthPrePassOff &&
-    vtkPhongVisibleClusters::CanCull(ren, act, this, this->Primitives);
+  this->CurrentInput->GetBounds(bounds);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongPolyDataMapper::GetUsedDepthPrePass()
+{
+  return this->Superclass::GetUsedDepthPrePass();
 }
 
 //------------------------------------------------------------------------------
 double vtkPhongPolyDataMapper::GetDepthComplexity()
 {
-  return this->Internal->PrePass.GetDepthComplexity();
+  return this->Superclass::GetDepthComplexity();
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
+double vtkPhongPolyDataMapper::GetDepthPassTriangles()
 {
-  this->Superclass::RenderPieceFinish(ren, act);
-  // Parameter problems are reported once, not every frame: only when they change.
-  this->Internal->Core->ReportProblems(this);
+  return this->Superclass::GetDepthPassTriangles();
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
+bool vtkPhongPolyDataMapper::GetUsedClosedSurfaceCulling()
 {
-  this->Internal->PrePass.ReleaseGraphicsResources(window);
-  this->Internal->Clusters.ReleaseGraphicsResources(window);
-  this->Internal->Core->ReleaseGraphicsResources();
-  this->Superclass::ReleaseGraphicsResources(window);
+  return this->Superclass::GetUsedClosedSurfaceCulling();
 }
 
 //------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "DebugView: " << this->GetDebugViewAsString() << "\n";
-  os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
   os << indent << "ComputeMissingNormals: " << (this->ComputeMissingNormals ? "On" : "Off") << "\n";
   os << indent << "NormalsWeighting: " << this->NormalsWeighting << "\n";
   os << indent << "NormalsFeatureAngle: " << this->NormalsFeatureAngle << "\n";
   os << indent << "NormalsSplitting: " << (this->NormalsSplitting ? "On" : "Off") << "\n";
   os << indent << "UsedGeneratedNormals: " << (this->UsedGeneratedNormals ? "yes" : "no") << "\n";
-  os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
-  os << indent << "InterpolatedDotProducts: " << (this->InterpolatedDotProducts ? "On" : "Off")
-     << "\n";
-  os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
-  os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
-  os << indent << "UsedDepthPrePass: " << (this->UsedDepthPrePass ? "yes" : "no") << "\n";
-  os << indent << "DepthComplexity: " << this->Internal->PrePass.GetDepthComplexity() << "\n";
+  os << indent << "UsedDepthPrePass: " << (this->GetUsedDepthPrePass() ? "yes" : "no") << "\n";
+  os << indent << "DepthComplexity: " << this->GetDepthComplexity() << "\n";
+  os << indent << "DepthPassTriangles: " << this->GetDepthPassTriangles() << "\n";
   os << indent
-     << "DepthPrePassOcclusionCulling: " << (this->DepthPrePassOcclusionCulling ? "On" : "Off")
+     << "UsedClosedSurfaceCulling: " << (this->GetUsedClosedSurfaceCulling() ? "yes" : "no")
      << "\n";
-  os << indent << "DepthPassTriangles: " << this->DepthPassTriangles << "\n";
-  os << indent << "ClosedSurfaceCulling: " << (this->ClosedSurfaceCulling ? "On" : "Off") << "\n";
-  os << indent << "UsedClosedSurfaceCulling: " << (this->UsedClosedSurfaceCulling ? "yes" : "no")
-     << "\n";
-  os << indent << "MaximumNumberOfShaderPrograms: " << this->MaximumNumberOfShaderPrograms << "\n";
+  os << indent << "LightingSettings:\n";
+  this->Internal->Settings.Get()->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Lighting:\n";
-  this->Internal->Core->PrintSelf(os, indent.GetNextIndent());
+  this->GetCore()->PrintSelf(os, indent.GetNextIndent());
 }
 
 //------------------------------------------------------------------------------
@@ -521,19 +327,11 @@ void vtkPhongPolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
 {
   if (auto* phong = vtkPhongPolyDataMapper::SafeDownCast(mapper))
   {
-    this->SetDebugView(phong->GetDebugView());
-    this->SetDebugLightIndex(phong->GetDebugLightIndex());
+    this->GetLightingSettings()->DeepCopy(phong->GetLightingSettings());
     this->SetComputeMissingNormals(phong->GetComputeMissingNormals());
     this->SetNormalsWeighting(phong->GetNormalsWeighting());
     this->SetNormalsFeatureAngle(phong->GetNormalsFeatureAngle());
     this->SetNormalsSplitting(phong->GetNormalsSplitting());
-    this->SetShaderSpecialization(phong->GetShaderSpecialization());
-    this->SetInterpolatedDotProducts(phong->GetInterpolatedDotProducts());
-    this->SetLightCullingBound(phong->GetLightCullingBound());
-    this->SetDepthPrePass(phong->GetDepthPrePass());
-    this->SetDepthPrePassOcclusionCulling(phong->GetDepthPrePassOcclusionCulling());
-    this->SetClosedSurfaceCulling(phong->GetClosedSurfaceCulling());
-    this->SetMaximumNumberOfShaderPrograms(phong->GetMaximumNumberOfShaderPrograms());
   }
   this->Superclass::ShallowCopy(mapper);
 }

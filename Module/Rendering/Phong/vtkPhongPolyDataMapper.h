@@ -35,76 +35,39 @@
 #define vtkPhongPolyDataMapper_h
 
 #include "vtkOpenGLPolyDataMapper.h"
-#include "vtkOpenMeshNormals.h"      // for the weighting values
-#include "vtkRenderingPhongModule.h" // for export macro
+#include "vtkOpenMeshNormals.h"       // for the weighting values
+#include "vtkPhongLightingMapper.h"   // for the superclass
+#include "vtkPhongLightingSettings.h" // for the settings
+#include "vtkRenderingPhongModule.h"  // for export macro
 
-#include <map>    // for std::map
 #include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
 
-class vtkShaderProperty;
+// The wrappers see VTK's mapper as the superclass: the lighting template between them adds
+// no method of the Python API.
+#ifdef __VTK_WRAP__
+#define vtkPhongPolyDataMapperSuperclass vtkOpenGLPolyDataMapper
+#else
+#define vtkPhongPolyDataMapperSuperclass vtkPhongLightingMapper<vtkOpenGLPolyDataMapper>
+#endif
 
-class VTKRENDERINGPHONG_EXPORT vtkPhongPolyDataMapper : public vtkOpenGLPolyDataMapper
+class VTKRENDERINGPHONG_EXPORT vtkPhongPolyDataMapper : public vtkPhongPolyDataMapperSuperclass
 {
 public:
   static vtkPhongPolyDataMapper* New();
-  vtkTypeMacro(vtkPhongPolyDataMapper, vtkOpenGLPolyDataMapper);
+  vtkTypeMacro(vtkPhongPolyDataMapper, vtkPhongPolyDataMapperSuperclass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * What the mapper shows: the final colour, one term alone (textures still multiply the
-   * ambient and diffuse terms), the shading normal as a colour ((N + 1) / 2, view
-   * coordinates), or the full contribution of the light chosen by DebugLightIndex.
-   *
-   * PositionVC and NormalVC write a G-buffer for a float target (vtkPhongFloatRenderPass):
-   * the shaded point's view-coordinate position, and the shading normal exactly as the
-   * lighting uses it (unit, view coordinates, after the fallbacks and the turn towards the
-   * viewer), unencoded. Their alpha is 1 on front faces and 0.5 on back faces, so the
-   * material side can be told; an 8-bit window clamps them. vtkPhongReference shades such a
-   * G-buffer in double precision to measure the shading arithmetic alone. Per-vertex
-   * Gouraud has no per-fragment normal: NormalVC shows the interpolated one.
+   * The lighting settings (vtkPhongLightingSettings, where each is documented): the debug
+   * view (DebugView, DebugViews, DebugLightIndex), light culling (LightCullingBound), the
+   * visibility work (ClosedSurfaceCulling, DepthPrePass, DepthPrePassOcclusionCulling), the
+   * shader cache (MaximumNumberOfShaderPrograms) and two measurement-only switches
+   * (ShaderSpecialization, InterpolatedDotProducts), each settable here under its own name,
+   * as on vtkPhongCompositePolyDataMapper. LightingSettings: the settings object itself,
+   * which mappers may share.
    */
-  enum DebugViews
-  {
-    Final = 0,
-    AmbientTerm = 1,
-    DiffuseTerm = 2,
-    SpecularTerm = 3,
-    EmissionTerm = 4,
-    ShadingNormal = 5,
-    SingleLight = 6,
-    PositionVC = 7,
-    NormalVC = 8
-  };
-
-  ///@{
-  /**
-   * The debug view. Default Final; one of the DebugViews (values are clamped).
-   * Each view is its own shader variant.
-   */
-  vtkSetClampMacro(DebugView, int, Final, NormalVC);
-  vtkGetMacro(DebugView, int);
-  void SetDebugViewToFinal() { this->SetDebugView(Final); }
-  void SetDebugViewToAmbientTerm() { this->SetDebugView(AmbientTerm); }
-  void SetDebugViewToDiffuseTerm() { this->SetDebugView(DiffuseTerm); }
-  void SetDebugViewToSpecularTerm() { this->SetDebugView(SpecularTerm); }
-  void SetDebugViewToEmissionTerm() { this->SetDebugView(EmissionTerm); }
-  void SetDebugViewToShadingNormal() { this->SetDebugView(ShadingNormal); }
-  void SetDebugViewToSingleLight() { this->SetDebugView(SingleLight); }
-  void SetDebugViewToPositionVC() { this->SetDebugView(PositionVC); }
-  void SetDebugViewToNormalVC() { this->SetDebugView(NormalVC); }
-  const char* GetDebugViewAsString();
-  ///@}
-
-  ///@{
-  /**
-   * The light shown by the SingleLight view: its index among the renderer's switched-on
-   * lights, in the order of the renderer's light collection. Default 0, range [0, VTK_INT_MAX];
-   * an index with no light renders black and reports an error. Changing it does not build a
-   * new shader.
-   */
-  vtkSetClampMacro(DebugLightIndex, int, 0, VTK_INT_MAX);
-  vtkGetMacro(DebugLightIndex, int);
-  ///@}
+  vtkPhongLightingSettingsForwardingMacro();
 
   ///@{
   /**
@@ -142,122 +105,22 @@ public:
   vtkOpenMeshNormals* GetNormalsGenerator();
   vtkGetMacro(UsedGeneratedNormals, bool);
 
-  ///@{
   /**
-   * Shader specialization. On (the default), the generated shader holds only what the scene
-   * needs (docs/shaders.md). Off, the mapper builds the all-features variant instead: every
-   * optional term (ambient, diffuse, specular, emission, the ambient light of positional
-   * lights, distance attenuation, spot falloff and soft edges, the normal fallback) and a
-   * loop for every light kind, lights the scene lacks standing in with zero intensity. It
-   * draws the same picture, more slowly: it exists to measure what specialization buys.
+   * How many point and spot lights the last planned primitive left out (light culling).
    */
-  vtkSetMacro(ShaderSpecialization, bool);
-  vtkGetMacro(ShaderSpecialization, bool);
-  vtkBooleanMacro(ShaderSpecialization, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Interpolated dot products. On (the default), directional lights lit per fragment take
-   * N.L and L.V from dot products evaluated at the vertices and interpolated, where the
-   * shading normal is VTK's vertex normal and the lobe is Phong's (docs/shaders.md): exact up
-   * to rounding, about a fifth less lighting time, about twice the rounding (1e-5 in ordinary
-   * scenes, docs/results/extremes.md). Off, they compute both per fragment: it exists to
-   * measure the trade.
-   */
-  vtkSetMacro(InterpolatedDotProducts, bool);
-  vtkGetMacro(InterpolatedDotProducts, bool);
-  vtkBooleanMacro(InterpolatedDotProducts, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Light culling. A point or spot light is left out of this actor's shader when the colour
-   * it could add anywhere in the actor's bounds, with the actor's materials, is small: the
-   * lights left out add at most LightCullingBound together, per channel (linear colour,
-   * before clamping), so the picture differs from the unculled one by at most that much
-   * (docs/lighting-model.md, "Light culling"). Default 0.5 / 255 (half an 8-bit level),
-   * range [0, 1e9]; 0 evaluates every light. Only in the final view (debug views keep every
-   * light). NumberOfCulledLights: how many lights the last planned primitive left out.
-   * Culling changes the light counts of the variant: each culled set is its own cached
-   * program, so a light that moves in and out of reach switches between two compiled
-   * programs.
-   */
-  virtual void SetLightCullingBound(double bound); ///< NaN is refused with an error
-  vtkGetMacro(LightCullingBound, double);
   int GetNumberOfCulledLights();
-  ///@}
-
-  enum DepthPrePassModes
-  {
-    DepthPrePassOff = 0,
-    DepthPrePassOn = 1,
-    DepthPrePassAutomatic = 2
-  };
 
   ///@{
   /**
-   * Depth pre-pass: draw the opaque geometry once with a program that computes no light
-   * (colour writes off), then lit, so that with the depth test (VTK's GL_LEQUAL) only the
-   * nearest surface of each pixel is shaded however many layers lie behind it. The pre-pass
-   * costs about one unlit draw and saves the lighting of every hidden layer. Automatic (the
-   * default) counts, on the GPU, the fragments a plain draw shades and those the pre-pass
-   * leaves visible, and uses the pre-pass while the hidden share pays for it under the
-   * lights evaluated (vtkPhongDepthPrePass.h; the break-even is in
-   * docs/results/performance.md, "Depth complexity"); On always, Off never. Never in
-   * translucent passes (depth peeling included), hardware selection (picking), for unlit
-   * actors or with edges or vertices shown; Automatic also leaves out render passes (shadows,
-   * SSAO), depth offsets and imposters, where the lit draw cannot skip hidden fragments.
-   * UsedDepthPrePass: whether the last draw used it. DepthComplexity: fragments a plain draw
-   * shades per visible one, as last measured by Automatic (0: not measured).
+   * What the last draw did: whether it used the depth pre-pass, the fragments a plain draw
+   * shades per visible one as last measured by the automatic pre-pass (0: not measured), the
+   * triangles the last depth pass drew (0 without a pre-pass), and whether it culled the back
+   * faces of closed surfaces.
    */
-  vtkSetClampMacro(DepthPrePass, int, DepthPrePassOff, DepthPrePassAutomatic);
-  vtkGetMacro(DepthPrePass, int);
-  vtkGetMacro(UsedDepthPrePass, bool);
+  bool GetUsedDepthPrePass();
   double GetDepthComplexity();
-  ///@}
-
-  ///@{
-  /**
-   * Occlusion culling of the depth pre-pass (default on): the depth pass only has to hold
-   * the nearest surfaces, so it leaves out the triangles hidden in the last frame. The
-   * triangles are cut into up to 256 spatially compact clusters (never mixing large
-   * connected components, such as nested contours); the depth pass draws the clusters seen,
-   * nearest first, each counted by an occlusion query (read a frame later), and leaves out
-   * those none of whose fragments passed; every 32 frames it draws each hidden cluster again
-   * to see whether it came into view. The lit draw still draws every triangle, so a cluster
-   * that comes into view costs frames of overdraw, never a wrong pixel. It applies to inputs
-   * of polygons only (no vertices, lines or strips), drawn as surfaces, outside render
-   * passes (vtkPhongVisibleClusters.h). DepthPassTriangles: the triangles the last depth
-   * pass drew (0 without a pre-pass).
-   */
-  vtkSetMacro(DepthPrePassOcclusionCulling, bool);
-  vtkGetMacro(DepthPrePassOcclusionCulling, bool);
-  vtkBooleanMacro(DepthPrePassOcclusionCulling, bool);
-  vtkGetMacro(DepthPassTriangles, double);
-  ///@}
-
-  ///@{
-  /**
-   * Culling of hidden back faces (default on). Seen from outside, the back faces of a closed,
-   * consistently oriented surface all lie behind its front faces, yet a plain draw sets
-   * them up, rasterizes them and tests their depth (on llvmpipe about a third of a closed
-   * mesh's frame). When the triangles form closed surfaces that bound a solid, never its
-   * inside-out (checked once per upload: points at one position taken as one, every edge
-   * used once each way, no concave polygon, cavities inside the solid), and the camera sees
-   * all of the bounds from beyond the near plane, the mapper culls the faces turned away:
-   * the picture is the same, but for pixels where a back face won a depth tie by rounding.
-   * Never for translucent or textured actors, other representations than surface, edges or
-   * vertices shown, clipping planes, shader code of the user's, triangle strips, wide lines,
-   * hardware selection, render passes (a shadow map is drawn from the light) or when the
-   * actor's property culls faces itself (vtkPhongClosedSurface.h). The analysis costs about
-   * 0.1 s per million triangles, once per upload. UsedClosedSurfaceCulling: whether the last
-   * draw culled.
-   */
-  vtkSetMacro(ClosedSurfaceCulling, bool);
-  vtkGetMacro(ClosedSurfaceCulling, bool);
-  vtkBooleanMacro(ClosedSurfaceCulling, bool);
-  vtkGetMacro(UsedClosedSurfaceCulling, bool);
+  double GetDepthPassTriangles();
+  bool GetUsedClosedSurfaceCulling();
   ///@}
 
   ///@{
@@ -276,16 +139,9 @@ public:
 
   ///@{
   /**
-   * The most lighting shader programs the mapper keeps compiled. Beyond it, the least
-   * recently used program is released: VTK's shader cache keeps its source and compiles it
-   * again (counted in ShaderCompileCount) if the scene needs it again. Default 32, range
-   * [0, 4096]; 0 keeps every program. A program costs about 1.5 MB on llvmpipe; a scene whose
-   * structure keeps changing (a light count raised from 1 to 200) would otherwise keep every
-   * one. NumberOfCompiledShaderPrograms: how many of the mapper's programs are compiled now;
-   * NumberOfReleasedShaderPrograms: how many it released so far.
+   * How many of the mapper's lighting programs are compiled now, and how many it released
+   * so far (MaximumNumberOfShaderPrograms).
    */
-  vtkSetClampMacro(MaximumNumberOfShaderPrograms, int, 0, 4096);
-  vtkGetMacro(MaximumNumberOfShaderPrograms, int);
   int GetNumberOfCompiledShaderPrograms();
   int GetNumberOfReleasedShaderPrograms();
   ///@}
@@ -302,8 +158,6 @@ public:
   const char* GetLastFragmentShaderSource();
   const char* GetLastGeometryShaderSource();
   ///@}
-
-  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
   /**
@@ -324,55 +178,36 @@ protected:
   vtkPhongPolyDataMapper();
   ~vtkPhongPolyDataMapper() override;
 
-  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   /// VTK's test, with the input as it was (no computed normals) for points and lines, which
   /// stock VTK draws unlit without normals.
-  bool StockNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act);
-  void UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  void BuildShaders(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderLight(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void SetLightingShaderParameters(
-    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  void SetPropertyShaderParameters(
-    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  bool StockNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void ComputeBounds() override;
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 
-  int DebugView = Final;
-  int DebugLightIndex = 0;
+  ///@{
+  /// One polydata in the buffer, the mapper's own settings (vtkPhongLightingMapper).
+  vtkPhongLightingSettings* LightingSettings() override;
+  std::vector<vtkPolyData*> LitBlocks() override;
+  bool BlocksInBuffer(std::vector<vtkPhongBufferBlock>& blocks) override;
+  void SurfaceBounds(double bounds[6]) override;
+  ///@}
+
   bool ComputeMissingNormals = true;
   int NormalsWeighting = vtkOpenMeshNormals::Max;
   double NormalsFeatureAngle = 30.0;
   bool NormalsSplitting = true;
   bool UsedGeneratedNormals = false;
-  bool ShaderSpecialization = true;
-  bool InterpolatedDotProducts = true;
-  double LightCullingBound = 0.5 / 255.0;
-  int DepthPrePass = DepthPrePassAutomatic;
-  bool UsedDepthPrePass = false;
-  bool DepthPrePassOcclusionCulling = true;
-  double DepthPassTriangles = 0.0;
-  bool ClosedSurfaceCulling = true;
-  bool UsedClosedSurfaceCulling = false;
-  int MaximumNumberOfShaderPrograms = 32;
 
 private:
   vtkPhongPolyDataMapper(const vtkPhongPolyDataMapper&) = delete;
   void operator=(const vtkPhongPolyDataMapper&) = delete;
 
   vtkPolyData* GetValidInput(vtkPolyData* input);
-  void DrawSurfaces(vtkRenderer* ren, vtkActor* act);
-  unsigned int HiddenFaces(vtkRenderer* ren, vtkActor* act);
-  bool CanCullDepthPass(vtkRenderer* ren, vtkActor* act);
-  void DrawDepthPass(vtkRenderer* ren, vtkActor* act, bool culled);
-  vtkShaderProperty* LegacyShaders() const;
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
 };
+
+#undef vtkPhongPolyDataMapperSuperclass
 
 #endif

@@ -14,7 +14,7 @@
  *
  * Not wrapped: an implementation detail of the mappers.
  *
- * @sa vtkPhongShaderBuilder
+ * @sa vtkPhongShaderPlan.h vtkPhongShaderPlanner
  */
 
 #ifndef vtkPhongShaderFeatures_h

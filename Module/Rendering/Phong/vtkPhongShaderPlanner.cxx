@@ -8,8 +8,9 @@
 #include "vtkLightCollection.h"
 #include "vtkLightingMapPass.h"
 #include "vtkPhongLightCulling.h"
-#include "vtkPhongMaterialUniforms.h"
-#include "vtkPhongPolyDataMapper.h"
+#include "vtkPhongLightGeometry.h"
+#include "vtkPhongLightingSettings.h"
+#include "vtkPhongMaterial.h"
 #include "vtkPhongProblemLog.h"
 #include "vtkPhongProperty.h"
 #include "vtkProperty.h"
@@ -22,7 +23,7 @@
 
 namespace
 {
-using View = vtkPhongPolyDataMapper; // for its DebugViews values
+using View = vtkPhongLightingSettings; // for its DebugViews values
 using Feature = vtkPhongFeature;
 
 bool IsPositive(double value)
@@ -116,7 +117,7 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   {
     return plan;
   }
-  const std::vector<vtkLight*> switchedOn = SwitchedOnLights(ren);
+  const std::vector<vtkLight*> switchedOn = vtkPhongLightGeometry::SwitchedOn(ren);
   // VTK lights a primitive when it has at least one light; the equation still
   // holds without lights (emission and ka*Ca*Ia), for surfaces VTK would light.
   const bool lit = state.LightComplexity > 0;
@@ -174,23 +175,6 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
     state, options.InterpolatedDots && !allFeatures, this->InterpolatedDotLights, plan);
   plan.Signature = MakeSignature(plan, allFeatures);
   return plan;
-}
-
-//------------------------------------------------------------------------------
-std::vector<vtkLight*> vtkPhongShaderPlanner::SwitchedOnLights(vtkRenderer* ren)
-{
-  std::vector<vtkLight*> switchedOn;
-  vtkLightCollection* lights = ren->GetLights();
-  vtkCollectionSimpleIterator it;
-  vtkLight* light;
-  for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
-  {
-    if (light->GetSwitch())
-    {
-      switchedOn.push_back(light);
-    }
-  }
-  return switchedOn;
 }
 
 //------------------------------------------------------------------------------
@@ -377,7 +361,7 @@ void vtkPhongShaderPlanner::SetMaterialFeatures(const Terms& terms, bool allFeat
   auto* phongFront = vtkPhongProperty::SafeDownCast(plan.FrontMaterial);
   if (terms.Specular)
   {
-    const int model = vtkPhongMaterialUniforms::LightingModelOf(plan.FrontMaterial);
+    const int model = vtkPhongMaterial::LightingModelOf(plan.FrontMaterial);
     const bool blinn =
       model == vtkPhongProperty::BlinnPhong || model == vtkPhongProperty::NormalizedBlinnPhong;
     features.Set(Feature::LobeBlinn, blinn);

@@ -2,7 +2,8 @@
  * @class   vtkPhongShaderPlanner
  * @brief   decides which lighting code a primitive needs: the plan and its signature
  *
- * The first of vtkPhongShaderBuilder's three concerns (plan, template, uniforms). MakePlan()
+ * The first of the shader path's three concerns (plan, template, uniforms), which
+ * vtkPhongMapperCore calls. MakePlan()
  * reads the renderer's lights, the actor's materials and what the mapper knows about the
  * primitive, and sets the features (vtkPhongShaderFeatures.h) of the shader it needs, in
  * named steps: whether vtkPhong handles the primitive at all, the lights by kind, the terms
@@ -12,26 +13,29 @@
  *
  * Private to the module.
  *
- * @sa vtkPhongShaderBuilder
+ * @sa vtkPhongMapperCore
  */
 
 #ifndef vtkPhongShaderPlanner_h
 #define vtkPhongShaderPlanner_h
 
-#include "vtkPhongShaderBuilder.h" // for Plan, PrimitiveState, Options
+#include "vtkPhongShaderPlan.h" // for the plan
 
 #include <cstddef> // for std::size_t
 #include <string>  // for std::string
 #include <vector>  // for std::vector
 
+class vtkActor;
+class vtkLight;
 class vtkPhongProblemLog;
+class vtkRenderer;
 
 class vtkPhongShaderPlanner
 {
 public:
-  using Plan = vtkPhongShaderBuilder::Plan;
-  using PrimitiveState = vtkPhongShaderBuilder::PrimitiveState;
-  using Options = vtkPhongShaderBuilder::Options;
+  using Plan = vtkPhongShaderPlan;
+  using PrimitiveState = vtkPhongPrimitiveState;
+  using Options = vtkPhongPlanOptions;
 
   /**
    * Lights that contribute nothing, standing in for the light kinds a scene lacks in the
@@ -48,12 +52,6 @@ public:
 
   Plan MakePlan(
     vtkRenderer* ren, vtkActor* actor, const PrimitiveState& state, const Options& options);
-
-  /**
-   * The renderer's lights that are switched on, in the renderer's order (the order of the
-   * light indices in messages and of DebugLightIndex).
-   */
-  static std::vector<vtkLight*> SwitchedOnLights(vtkRenderer* ren);
 
   /**
    * How many directional lights the varyings of INTERPOLATED_DOTS (docs/shaders.md) can carry

@@ -2,7 +2,8 @@
  * @class   vtkPhongShaderTemplate
  * @brief   writes a plan's lighting code from the GLSL templates of glsl/ into VTK's shaders
  *
- * The second of vtkPhongShaderBuilder's three concerns (plan, template, uniforms). The files
+ * The second of the shader path's three concerns (plan, template, uniforms), which
+ * vtkPhongMapperCore calls. The files
  * of glsl/ are templates: sections (//PHONG_SECTION name) whose lines between
  * "//PHONG_IF FEATURE" (or "!FEATURE") and "//PHONG_ENDIF" are kept only when the plan has
  * (or lacks) the feature, and whose @DIRECTIONAL_COUNT@, @POINT_COUNT@, @SPOT_COUNT@ become
@@ -15,14 +16,14 @@
  *
  * Private to the module.
  *
- * @sa vtkPhongShaderBuilder vtkPhongShaderFeatures.h
+ * @sa vtkPhongMapperCore vtkPhongShaderFeatures.h
  */
 
 #ifndef vtkPhongShaderTemplate_h
 #define vtkPhongShaderTemplate_h
 
-#include "vtkPhongShaderBuilder.h" // for Plan
-#include "vtkShader.h"             // for vtkShader::Type
+#include "vtkPhongShaderPlan.h" // for the plan
+#include "vtkShader.h"          // for vtkShader::Type
 
 #include <map>    // for std::map
 #include <string> // for std::string
@@ -33,7 +34,7 @@ class vtkObject;
 class vtkPhongShaderTemplate
 {
 public:
-  using Plan = vtkPhongShaderBuilder::Plan;
+  using Plan = vtkPhongShaderPlan;
 
   explicit vtkPhongShaderTemplate(vtkObject* reporter);
 

@@ -33,7 +33,7 @@ std::string vtkPhongShadowMaps::CopyFactors(int count)
 
 //------------------------------------------------------------------------------
 void vtkPhongShadowMaps::UploadLightIndices(
-  vtkShaderProgram* program, vtkRenderer* ren, const vtkPhongShaderBuilder::Plan& plan)
+  vtkShaderProgram* program, vtkRenderer* ren, const vtkPhongShaderPlan& plan)
 {
   // The plan the core keeps does not have SHADOW_MAPS (the shader source decides it): ask
   // the program.

@@ -15,7 +15,7 @@
 #ifndef vtkPhongShadowMaps_h
 #define vtkPhongShadowMaps_h
 
-#include "vtkPhongShaderBuilder.h" // for Plan
+#include "vtkPhongShaderPlan.h" // for the plan
 
 #include <string> // for std::string
 
@@ -40,7 +40,7 @@ std::string CopyFactors(int count);
  * where the program has the shadow-map arrays.
  */
 void UploadLightIndices(
-  vtkShaderProgram* program, vtkRenderer* ren, const vtkPhongShaderBuilder::Plan& plan);
+  vtkShaderProgram* program, vtkRenderer* ren, const vtkPhongShaderPlan& plan);
 }
 
 #endif

@@ -13,6 +13,7 @@
 #include "vtkPVTrivialProducer.h"
 #include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongGhostCellsStash.h"
+#include "vtkPhongLightingSettings.h"
 #include "vtkPhongProperty.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -30,6 +31,12 @@ vtkPhongSurfaceRepresentation::vtkPhongSurfaceRepresentation()
   this->Mapper = mapper;
   this->LODMapper->Delete();
   this->LODMapper = vtkPhongCompositePolyDataMapper::New();
+  // One lighting settings object, which the properties below set, for both mappers.
+  for (vtkMapper* drawing : { this->Mapper, this->LODMapper })
+  {
+    vtkPhongCompositePolyDataMapper::SafeDownCast(drawing)->SetLightingSettings(
+      this->LightingSettings);
+  }
   this->SetArrayIdNames(nullptr, nullptr);
 
   auto* material = vtkPhongProperty::New();
@@ -178,28 +185,25 @@ void vtkPhongSurfaceRepresentation::SetPerVertexGouraud(int perVertex)
 //------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetDebugView(int view)
 {
-  for (vtkMapper* mapper : { this->Mapper, this->LODMapper })
-  {
-    vtkPhongCompositePolyDataMapper::SafeDownCast(mapper)->SetDebugView(view);
-  }
+  this->LightingSettings->SetDebugView(view);
 }
 
 //------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetDebugLightIndex(int index)
 {
-  for (vtkMapper* mapper : { this->Mapper, this->LODMapper })
-  {
-    vtkPhongCompositePolyDataMapper::SafeDownCast(mapper)->SetDebugLightIndex(index);
-  }
+  this->LightingSettings->SetDebugLightIndex(index);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetLightCullingBound(double bound)
+{
+  this->LightingSettings->SetLightCullingBound(bound);
 }
 
 //------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetClosedSurfaceCulling(int cull)
 {
-  for (vtkMapper* mapper : { this->Mapper, this->LODMapper })
-  {
-    vtkPhongCompositePolyDataMapper::SafeDownCast(mapper)->SetClosedSurfaceCulling(cull != 0);
-  }
+  this->LightingSettings->SetClosedSurfaceCulling(cull != 0);
 }
 
 //------------------------------------------------------------------------------
@@ -214,16 +218,25 @@ int vtkPhongSurfaceRepresentation::GetUsedClosedSurfaceCulling()
 //------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetDepthPrePass(int mode)
 {
-  for (vtkMapper* mapper : { this->Mapper, this->LODMapper })
-  {
-    vtkPhongCompositePolyDataMapper::SafeDownCast(mapper)->SetDepthPrePass(mode);
-  }
+  this->LightingSettings->SetDepthPrePass(mode);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetDepthPrePassOcclusionCulling(int cull)
+{
+  this->LightingSettings->SetDepthPrePassOcclusionCulling(cull != 0);
 }
 
 //------------------------------------------------------------------------------
 int vtkPhongSurfaceRepresentation::GetUsedDepthPrePass()
 {
   return vtkPhongCompositePolyDataMapper::SafeDownCast(this->Mapper)->GetUsedDepthPrePass() ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetMaximumNumberOfShaderPrograms(int count)
+{
+  this->LightingSettings->SetMaximumNumberOfShaderPrograms(count);
 }
 
 //------------------------------------------------------------------------------
@@ -279,6 +292,8 @@ void vtkPhongSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "Normals:\n";
   this->Normals->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "LightingSettings:\n";
+  this->LightingSettings->PrintSelf(os, indent.GetNextIndent());
   os << indent << "GhostCells:\n";
   this->GhostCells->PrintSelf(os, indent.GetNextIndent());
   os << indent << "GhostStash:\n";

@@ -33,6 +33,7 @@
 
 class vtkGhostCellsGenerator;
 class vtkOpenMeshNormals;
+class vtkPhongLightingSettings;
 class vtkPhongGhostCellsStash;
 
 class VTKPHONGREPRESENTATIONS_EXPORT vtkPhongSurfaceRepresentation
@@ -67,15 +68,18 @@ public:
   void SetPerVertexGouraud(int perVertex);
 
   /**
-   * The mapper's debug view (vtkPhongPolyDataMapper::DebugViews; default 0, Final) and the
-   * light the SingleLight view shows.
+   * The lighting settings of both mappers (full resolution and level of detail), one
+   * vtkPhongLightingSettings object (where each is documented): the debug view
+   * (vtkPhongLightingSettings::DebugViews; default 0, Final), the light the SingleLight view
+   * shows, and light culling's bound (default 0.5 / 255; NaN refused).
    */
   void SetDebugView(int view);
   void SetDebugLightIndex(int index);
+  void SetLightCullingBound(double bound);
 
   /**
    * Culling of the hidden back faces of closed surfaces seen from outside
-   * (vtkPhongCompositePolyDataMapper::SetClosedSurfaceCulling; default on, the picture is the
+   * (vtkPhongLightingSettings::SetClosedSurfaceCulling; default on, the picture is the
    * same) and whether the last render culled them (1) or not (0): a piece of a surface split
    * between ranks is not closed, and is drawn whole.
    */
@@ -83,11 +87,19 @@ public:
   int GetUsedClosedSurfaceCulling();
 
   /**
-   * The depth pre-pass (vtkPhongCompositePolyDataMapper::SetDepthPrePass: 0 off, 1 on, 2
-   * automatic, the default) and whether the last render used it (1) or not (0).
+   * The depth pre-pass (vtkPhongLightingSettings::SetDepthPrePass: 0 off, 1 on, 2 automatic,
+   * the default), its occlusion culling (default on), and whether the last render used it
+   * (1) or not (0).
    */
   void SetDepthPrePass(int mode);
+  void SetDepthPrePassOcclusionCulling(int cull);
   int GetUsedDepthPrePass();
+
+  /**
+   * The most lighting programs each block mapper keeps compiled (default 32, [0, 4096]; 0
+   * keeps every one).
+   */
+  void SetMaximumNumberOfShaderPrograms(int count);
 
   /**
    * On (default): the surface's normals are computed by vtkOpenMeshNormals. Off: the normals
@@ -173,6 +185,7 @@ protected:
   vtkNew<vtkPhongGhostCellsStash> GhostStash;
   vtkNew<vtkPhongGhostCellsStash> GhostTrim;
   vtkNew<vtkOpenMeshNormals> Normals;
+  vtkNew<vtkPhongLightingSettings> LightingSettings;
   vtkNew<vtkPhongGhostCellsStash> GhostRemoval;
 
 private:

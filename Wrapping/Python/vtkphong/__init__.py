@@ -19,7 +19,8 @@ vtkPhongCompositePolyDataMapper (the same lighting for multiblock and
 partitioned datasets, as ParaView draws them), vtkOpenMeshNormals (normals
 for meshes without them), vtkPhongFloatRenderPass (float read-back), and the
 measuring tools: vtkPhongReference (the model in double precision),
-vtkPhongImageComparison and vtkPhongImageIO (OpenImageIO).
+vtkPhongImageComparison and vtkPhongImageIO (OpenImageIO; the command line
+writes its pictures with the latter).
 
 The lighting equation is described in docs/lighting-model.md of the project.
 """
@@ -29,7 +30,9 @@ The lighting equation is described in docs/lighting-model.md of the project.
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 # One extension module per VTK module of the project (Module/<Kit>/<Name>).
+from .vtkCommonPhong import *  # noqa: F401,F403
 from .vtkFiltersOpenMesh import *  # noqa: F401,F403
 from .vtkIOMesh import *  # noqa: F401,F403
+from .vtkImagingPhong import *  # noqa: F401,F403
 from .vtkRenderingPhong import *  # noqa: F401,F403
 from .vtkReferencePhong import *  # noqa: F401,F403

@@ -1,6 +1,6 @@
 //============================================================================
 // vtkPhong fragment shader pieces, injected at VTK's polydata fragment shader
-// tags by vtkPhongShaderBuilder (same //PHONG_IF template rules as
+// tags by vtkPhongShaderTemplate (same //PHONG_IF template rules as
 // vtkPhongLightingLib.glsl). VTK's Color::Impl has already defined
 // ambientColor (ka*Ca), diffuseColor (kd*Cd), specularColor (ks*Cs),
 // specularPower (n) and opacity, with the back material on back faces, and

@@ -6,7 +6,7 @@
 //         + sum_i A_i * ( ka*Ca*La_i*I_i + kd*Cd*Ld_i*I_i*max(N.L_i, 0)
 //                       + ks*Cs*Ls_i*I_i*S_i*G_i )
 //
-// This file is a template read by vtkPhongShaderBuilder. A line between
+// This file is a template read by vtkPhongShaderTemplate. A line between
 // "//PHONG_IF FLAG" and "//PHONG_ENDIF" is kept only when the scene needs FLAG
 // ("!FLAG": when it does not), and @NAME@ is replaced by a number, so the
 // shader carries only the light kinds and the terms in use. Light colours

@@ -1,7 +1,7 @@
 //============================================================================
 // vtkPhong vertex shader pieces for per-vertex Gouraud: the lighting equation
 // is evaluated at each vertex and the light sums are interpolated. Injected
-// at VTK's polydata vertex shader tags by vtkPhongShaderBuilder (same
+// at VTK's polydata vertex shader tags by vtkPhongShaderTemplate (same
 // //PHONG_IF template rules as vtkPhongLightingLib.glsl). VTK's Normal::Impl
 // and PositionVC::Impl have set normalVCVSOutput and vertexVCVSOutput.
 //

@@ -14,8 +14,9 @@
 
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPhongCompositePolyDataMapper.h"
-#include "vtkPhongShaderBuilder.h"
+#include "vtkPhongShaderPlan.h"
 #include "vtkPhongShaderPlanner.h"
+#include "vtkPhongShaderTemplate.h"
 #include "vtkShaderProperty.h"
 #include "vtkSphereSource.h"
 
@@ -337,9 +338,10 @@ int TestPhongShaderSpecialization(int, char*[])
 
   // Every section of every template resolves cleanly under flag sets that
   // switch each conditional both ways.
-  vtkNew<vtkPhongShaderBuilder> builder;
+  vtkNew<vtkObject> reporter; // the object the template's errors name
   vtkPhongTest::ErrorCollector errors;
-  errors.Observe(builder);
+  errors.Observe(reporter);
+  const vtkPhongShaderTemplate resolver(reporter);
   using F = vtkPhongFeature;
   const std::vector<std::vector<vtkPhongFeature>> flagSets = {
     {},
@@ -358,7 +360,7 @@ int TestPhongShaderSpecialization(int, char*[])
     { "vtkPhongVS", "Impl" }, { "vtkPhongGS", "Dec" }, { "vtkPhongGS", "Impl" } };
   for (const auto& flags : flagSets)
   {
-    vtkPhongShaderBuilder::Plan plan;
+    vtkPhongShaderPlan plan;
     for (vtkPhongFeature feature : flags)
     {
       plan.Features.Set(feature);
@@ -366,7 +368,7 @@ int TestPhongShaderSpecialization(int, char*[])
     for (const auto& section : sections)
     {
       const std::string code =
-        builder->ResolveTemplate(vtkPhongShaderBuilder::GetTemplate(section[0]), section[1], plan);
+        resolver.Resolve(vtkPhongShaderTemplate::Get(section[0]), section[1], plan);
       checks.Expect(!Has(code, "//PHONG_") && !Has(code, "@"),
         std::string(section[0]) + " " + section[1] + ": directives resolved");
     }
@@ -374,8 +376,8 @@ int TestPhongShaderSpecialization(int, char*[])
   checks.Expect(errors.Messages.empty(), "the templates are well formed");
 
   // A feature name the module does not know is an error, not a silent no-op.
-  builder->ResolveTemplate("//PHONG_SECTION Probe\n//PHONG_IF SPECULR\nx\n//PHONG_ENDIF\n", "Probe",
-    vtkPhongShaderBuilder::Plan());
+  resolver.Resolve(
+    "//PHONG_SECTION Probe\n//PHONG_IF SPECULR\nx\n//PHONG_ENDIF\n", "Probe", vtkPhongShaderPlan());
   checks.Expect(errors.Messages.size() == 1 && Has(errors.Messages[0], "SPECULR"),
     "a misspelt feature in a template is reported");
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;

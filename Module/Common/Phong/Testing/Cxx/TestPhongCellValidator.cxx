@@ -173,7 +173,8 @@ void CheckCompositeMapper(vtkPhongTest::Checks& checks)
   {
     drawn += vtkPhongTest::PixelAt(image, x, 50)[0] > 0 ? 1 : 0;
   }
-  checks.Expect(drawn > 30, "both blocks' valid triangles are drawn (" + std::to_string(drawn) +
+  checks.Expect(drawn > 30,
+    "both blocks' valid triangles are drawn (" + std::to_string(drawn) +
       " pixels of the middle row)");
 }
 

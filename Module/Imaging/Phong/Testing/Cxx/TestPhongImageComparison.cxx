@@ -3,7 +3,8 @@
 // map written only on failure, 8-bit against float, and lossless EXR / PNG round trips
 // (NaN, Inf and values above 1 included), with their error paths.
 
-#include "vtkPhongReferenceTesting.h"
+#include "vtkPhongImageComparison.h"
+#include "vtkPhongTestUtilities.h"
 
 #include "vtkPhongImageIO.h"
 

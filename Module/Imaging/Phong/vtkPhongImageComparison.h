@@ -36,12 +36,12 @@
 #ifndef vtkPhongImageComparison_h
 #define vtkPhongImageComparison_h
 
+#include "vtkImagingPhongModule.h" // for export macro
 #include "vtkObject.h"
-#include "vtkReferencePhongModule.h" // for export macro
 
 class vtkImageData;
 
-class VTKREFERENCEPHONG_EXPORT vtkPhongImageComparison : public vtkObject
+class VTKIMAGINGPHONG_EXPORT vtkPhongImageComparison : public vtkObject
 {
 public:
   static vtkPhongImageComparison* New();

@@ -22,14 +22,14 @@
 #ifndef vtkPhongCellValidator_h
 #define vtkPhongCellValidator_h
 
-#include "vtkFiltersOpenMeshModule.h" // for export macro
+#include "vtkCommonPhongModule.h" // for export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for the return value
 
 class vtkCellArray;
 class vtkPolyData;
 
-class VTKFILTERSOPENMESH_EXPORT vtkPhongCellValidator : public vtkObject
+class VTKCOMMONPHONG_EXPORT vtkPhongCellValidator : public vtkObject
 {
 public:
   static vtkPhongCellValidator* New();

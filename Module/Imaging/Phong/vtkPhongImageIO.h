@@ -17,12 +17,12 @@
 #ifndef vtkPhongImageIO_h
 #define vtkPhongImageIO_h
 
+#include "vtkImagingPhongModule.h" // for export macro
 #include "vtkObject.h"
-#include "vtkReferencePhongModule.h" // for export macro
 
 class vtkImageData;
 
-class VTKREFERENCEPHONG_EXPORT vtkPhongImageIO : public vtkObject
+class VTKIMAGINGPHONG_EXPORT vtkPhongImageIO : public vtkObject
 {
 public:
   static vtkPhongImageIO* New();

@@ -1,0 +1,115 @@
+#include "vtkPhongLightingSettings.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkPhongClampedSetter.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkPhongLightingSettings);
+
+//------------------------------------------------------------------------------
+void vtkPhongLightingSettings::SetLightCullingBound(double bound)
+{
+  this->SetLightCullingBound(bound, this);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightingSettings::SetLightCullingBound(double bound, vtkObject* reporter)
+{
+  // The error names the object the user set it on; the change is this object's.
+  double value = this->LightCullingBound;
+  if (vtkPhongSetClamped(reporter, "LightCullingBound", value, bound, 0.0, 1.0e9) &&
+    reporter != this)
+  {
+    this->Modified();
+  }
+  this->LightCullingBound = value;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongLightingSettings::GetDebugViewAsString()
+{
+  return DebugViewAsString(this->DebugView);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongLightingSettings::DebugViewAsString(int view)
+{
+  switch (view)
+  {
+    case AmbientTerm:
+      return "AmbientTerm";
+    case DiffuseTerm:
+      return "DiffuseTerm";
+    case SpecularTerm:
+      return "SpecularTerm";
+    case EmissionTerm:
+      return "EmissionTerm";
+    case ShadingNormal:
+      return "ShadingNormal";
+    case SingleLight:
+      return "SingleLight";
+    case PositionVC:
+      return "PositionVC";
+    case NormalVC:
+      return "NormalVC";
+    case Final:
+    default:
+      return "Final";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightingSettings::DeepCopy(vtkPhongLightingSettings* other)
+{
+  if (!other || other == this)
+  {
+    return;
+  }
+  this->SetDebugView(other->DebugView);
+  this->SetDebugLightIndex(other->DebugLightIndex);
+  this->SetShaderSpecialization(other->ShaderSpecialization);
+  this->SetInterpolatedDotProducts(other->InterpolatedDotProducts);
+  this->SetLightCullingBound(other->LightCullingBound);
+  this->SetDepthPrePass(other->DepthPrePass);
+  this->SetDepthPrePassOcclusionCulling(other->DepthPrePassOcclusionCulling);
+  this->SetClosedSurfaceCulling(other->ClosedSurfaceCulling);
+  this->SetMaximumNumberOfShaderPrograms(other->MaximumNumberOfShaderPrograms);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightingSettings::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DebugView: " << this->GetDebugViewAsString() << "\n";
+  os << indent << "DebugLightIndex: " << this->DebugLightIndex << "\n";
+  os << indent << "ShaderSpecialization: " << (this->ShaderSpecialization ? "On" : "Off") << "\n";
+  os << indent << "InterpolatedDotProducts: " << (this->InterpolatedDotProducts ? "On" : "Off")
+     << "\n";
+  os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
+  os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
+  os << indent
+     << "DepthPrePassOcclusionCulling: " << (this->DepthPrePassOcclusionCulling ? "On" : "Off")
+     << "\n";
+  os << indent << "ClosedSurfaceCulling: " << (this->ClosedSurfaceCulling ? "On" : "Off") << "\n";
+  os << indent << "MaximumNumberOfShaderPrograms: " << this->MaximumNumberOfShaderPrograms << "\n";
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongLightingSettingsHolder::Set(vtkPhongLightingSettings* settings, vtkObject* holder)
+{
+  if (!settings)
+  {
+    vtkErrorWithObjectMacro(holder, "A mapper always has lighting settings: nullptr refused.");
+    return false;
+  }
+  const bool changed = settings != this->Settings;
+  this->Settings = settings;
+  return changed;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkPhongLightingSettingsHolder::MTime(vtkMTimeType holderTime) const
+{
+  return std::max(holderTime, this->Settings->GetMTime());
+}
