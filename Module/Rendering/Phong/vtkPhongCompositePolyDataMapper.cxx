@@ -140,7 +140,8 @@ void vtkPhongCompositePolyDataMapper::ShallowCopy(vtkAbstractMapper* mapper)
 vtkCompositePolyDataMapperDelegator* vtkPhongCompositePolyDataMapper::CreateADelegator()
 {
   vtkPhongCompositeDelegator* delegator = vtkPhongCompositeDelegator::New();
-  this->Internal->Add(static_cast<vtkPhongBlockMapper*>(delegator->GetDelegate()), this);
+  this->Internal->Add(
+    static_cast<vtkPhongBlockMapper*>(delegator->GetDelegate().GetPointer()), this);
   return delegator;
 }
 #else
