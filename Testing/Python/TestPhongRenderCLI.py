@@ -442,4 +442,36 @@ with open(path("latin1.obj"), "wb") as stream:
 result = run(path("latin1.obj"), "-o", path("latin1.png"), "--quiet")
 checks.expect(result.returncode == 0 and result.stderr == "",
               "a material name in Latin-1 renders (%r)" % result.stderr)
+
+
+# Under an address-space limit (ulimit -v), as batch systems and containers set one: the
+# reading child's limit must stay within the inherited one (setrlimit cannot raise a hard
+# limit, and the default asks for half the RAM). assimp's own test model, a file not made here.
+def run_limited(limit_kb, *arguments):
+    import resource
+
+    def limit():
+        resource.setrlimit(resource.RLIMIT_AS, (limit_kb << 10, limit_kb << 10))
+
+    result = subprocess.run([args.cli] + [str(a) for a in arguments], capture_output=True,
+                            timeout=300, preexec_fn=limit)
+    result.stderr = result.stderr.decode("utf-8", "replace")
+    return result
+
+
+spider = "/usr/share/assimp/models/STL/Spider_binary.stl"  # Debian's assimp-testmodels
+if not os.path.exists(spider):
+    spider = path("sphere-binary.stl")
+result = run_limited(6000000, spider, "-o", path("limited.png"), "--quiet")
+checks.expect(result.returncode == 0 and result.stderr == "" and
+              len(covered(pixels(read(path("limited.png"))))) > 0,
+              "ulimit -v 6000000 (5.7 GB): a valid file renders (%r)" % result.stderr)
+# Too little to render at all: one line naming the file, status 1 (never a traceback).
+for limit_kb in (800000, 400000):
+    result = run_limited(limit_kb, spider, "-o", path("starved.png"), "--quiet")
+    lines = result.stderr.splitlines()
+    checks.expect(result.returncode == 0 or (
+        result.returncode == 1 and len(lines) == 1 and spider in lines[0]
+        and lines[0].startswith("vtkphong-render: error: ")),
+        "ulimit -v %d: renders or one error line naming the file (%r)" % (limit_kb, lines))
 checks.exit()

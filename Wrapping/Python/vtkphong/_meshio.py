@@ -126,12 +126,14 @@ def run_reader(path, directory, limits=None):
     """Run vtkphong._readers on path into directory; RenderError naming the file and the
     reason when the child fails, crashes, runs out of memory or time."""
     timeout, memory = limits or reader_limits()
+    memory = inherited_memory_limit(memory)
     package_root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     environment = dict(os.environ)
     environment["PYTHONPATH"] = os.pathsep.join(
         [package_root] + [p for p in environment.get("PYTHONPATH", "").split(os.pathsep) if p])
 
     def limit_memory():
+        # Never above what this process may have (a hard limit cannot be raised).
         resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
 
@@ -142,8 +144,21 @@ def run_reader(path, directory, limits=None):
             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, check=False)
     except subprocess.TimeoutExpired:
         raise RenderError("cannot read %s: the reader did not finish in %g s" % (path, timeout))
+    except (OSError, subprocess.SubprocessError) as error:
+        raise RenderError("cannot read %s: the reader could not start (%s; address space "
+                          "limited to %d MB)" % (path, error, memory >> 20))
     if child.returncode != 0:
         raise RenderError("cannot read %s: %s" % (path, _child_failure(child, path, memory)))
+
+
+def inherited_memory_limit(memory):
+    """memory, lowered to the address-space limit this process runs under (ulimit -v):
+    the child may not have more than its parent, whatever the default says."""
+    soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    for inherited in (soft, hard):
+        if inherited != resource.RLIM_INFINITY and inherited >= 0:
+            memory = min(memory, inherited)
+    return memory
 
 
 def _child_failure(child, path, memory):

@@ -389,6 +389,13 @@ def run(arguments):
     collector = _MessageLog(_ISOLATED_MESSAGE_FILE)
     try:
         _render_and_write(options, settings, collector)
+    except (RenderError, UsageError):
+        raise
+    except Exception as error:  # a bug: still one line, naming the file, unless debugging
+        if os.environ.get("VTKPHONG_DEBUG"):
+            raise
+        raise RenderError("internal error while rendering %s: %s: %s (VTKPHONG_DEBUG=1 shows "
+                          "the traceback)" % (options.mesh, type(error).__name__, error))
     finally:
         collector.close()
 
@@ -489,8 +496,11 @@ def _main_in_child(arguments):
 
 def _wait_for_child(arguments, message_file):
     """Fork, run main in the child, and turn its end into a status."""
+    read_end, write_end = os.pipe()
     child = os.fork()
     if child == 0:
+        os.close(read_end)
+        os.dup2(write_end, 2)  # the C++ runtime's last words go through the filter below
         status = 1
         try:
             status = main(arguments)
@@ -500,20 +510,69 @@ def _wait_for_child(arguments, message_file):
             sys.stdout.flush()
             sys.stderr.flush()
             os._exit(status)
+    os.close(write_end)
+    relay = _StderrRelay(read_end)
     while True:
         try:
             wait_status = os.waitpid(child, 0)[1]
             break
         except KeyboardInterrupt:
             continue  # the terminal's SIGINT reached the child too; it says "interrupted"
+    relay.finish()
     if os.WIFSIGNALED(wait_status):
-        number = os.WTERMSIG(wait_status)
-        said = _first_error_in(_read_messages(message_file))
-        print("%s: error: the renderer crashed (%s) on %s%s; please report it with the file"
-              % (PROGRAM, _signal_name(number), _mesh_argument(arguments),
-                 ", after VTK's error: " + said.rstrip(".") if said else ""), file=sys.stderr)
+        print("%s: error: %s" % (PROGRAM, _crash_reason(
+            os.WTERMSIG(wait_status), arguments, _read_messages(message_file), relay.dropped)),
+              file=sys.stderr)
         return 1
     return os.WEXITSTATUS(wait_status)
+
+
+class _StderrRelay:
+    """Copies the rendering child's standard error to ours as it comes, but for the lines the
+    C++ runtime writes as it aborts (kept in `dropped` for the one error line)."""
+
+    RUNTIME_LINES = ("terminate called", "  what():")
+
+    def __init__(self, descriptor):
+        import threading
+        self.dropped = []
+        # newline="": a progress line rewritten with carriage returns passes as it is.
+        self._stream = os.fdopen(descriptor, "r", errors="replace", newline="")
+        self._thread = threading.Thread(target=self._copy, daemon=True)
+        self._thread.start()
+
+    def _copy(self):
+        for line in self._stream:
+            if line.startswith(self.RUNTIME_LINES):
+                self.dropped.append(line.strip())
+            else:
+                sys.stderr.write(line)
+                sys.stderr.flush()
+
+    def finish(self):
+        self._thread.join()
+        self._stream.close()
+
+
+def _crash_reason(number, arguments, messages, runtime_lines):
+    """The error line's text for a rendering child ended by a signal."""
+    said = _first_error_in(messages)
+    mesh = _mesh_argument(arguments)
+    out_of_memory = any("bad_alloc" in line for line in runtime_lines) or (
+        said and "Unable to allocate" in said)
+    if out_of_memory:
+        limit = _address_space_limit()
+        return "out of memory rendering %s%s" % (
+            mesh, " (address space limited to %d MB by ulimit -v)" % (limit >> 20) if limit else "")
+    return "the renderer crashed (%s) on %s%s; please report it with the file" % (
+        _signal_name(number), mesh, ", after VTK's error: " + said.rstrip(".") if said else "")
+
+
+def _address_space_limit():
+    """The address-space limit this process runs under, or None."""
+    import resource
+    soft = resource.getrlimit(resource.RLIMIT_AS)[0]
+    return None if soft == resource.RLIM_INFINITY else soft
 
 
 def _signal_name(number):
