@@ -136,6 +136,7 @@ bool vtkPhongLightingMapper<Base>::GetNeedToRebuildShaders(
   core->Options.Specialize = settings->GetShaderSpecialization();
   core->Options.InterpolatedDots = settings->GetInterpolatedDotProducts();
   core->Options.LightCullingBound = settings->GetLightCullingBound();
+  core->Options.LightingWithoutLights = settings->GetLightingWithoutLights();
   core->Options.DepthOnly = this->Internal->DrawingDepthOnly;
   core->MaximumNumberOfPrograms = settings->GetMaximumNumberOfShaderPrograms();
   return core->PlanPrimitive(cellBO, ren, act, state) || rebuild;

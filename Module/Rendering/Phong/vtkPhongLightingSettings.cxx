@@ -71,6 +71,7 @@ void vtkPhongLightingSettings::DeepCopy(vtkPhongLightingSettings* other)
   this->SetShaderSpecialization(other->ShaderSpecialization);
   this->SetInterpolatedDotProducts(other->InterpolatedDotProducts);
   this->SetLightCullingBound(other->LightCullingBound);
+  this->SetLightingWithoutLights(other->LightingWithoutLights);
   this->SetDepthPrePass(other->DepthPrePass);
   this->SetDepthPrePassOcclusionCulling(other->DepthPrePassOcclusionCulling);
   this->SetClosedSurfaceCulling(other->ClosedSurfaceCulling);
@@ -87,6 +88,8 @@ void vtkPhongLightingSettings::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InterpolatedDotProducts: " << (this->InterpolatedDotProducts ? "On" : "Off")
      << "\n";
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
+  os << indent << "LightingWithoutLights: " << (this->LightingWithoutLights ? "On" : "Off")
+     << "\n";
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent
      << "DepthPrePassOcclusionCulling: " << (this->DepthPrePassOcclusionCulling ? "On" : "Off")

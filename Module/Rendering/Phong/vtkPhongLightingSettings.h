@@ -140,6 +140,19 @@ public:
 
   ///@{
   /**
+   * What a surface shows when the renderer has no switched-on light (automatic light
+   * creation off, every light removed or switched off: PyVista's `lighting=None` and
+   * `remove_all_lights()`, vedo's `lighting("off")` on a renderer). Off (the default), as
+   * VTK: unlit, its colours as they are (a colour map's true colours). On, what the model
+   * gives without a light: emission and the ambient term E + ka*Ca*Ia (docs/lighting-model.md).
+   */
+  vtkSetMacro(LightingWithoutLights, bool);
+  vtkGetMacro(LightingWithoutLights, bool);
+  vtkBooleanMacro(LightingWithoutLights, bool);
+  ///@}
+
+  ///@{
+  /**
    * Depth pre-pass: draw the opaque geometry once with a program that computes no light
    * (colour writes off), then lit, so that with the depth test (VTK's GL_LEQUAL) only the
    * nearest surface of each pixel is shaded however many layers lie behind it. The pre-pass
@@ -228,6 +241,7 @@ protected:
   bool ShaderSpecialization = true;
   bool InterpolatedDotProducts = true;
   double LightCullingBound = 0.5 / 255.0;
+  bool LightingWithoutLights = false;
   int DepthPrePass = DepthPrePassAutomatic;
   bool DepthPrePassOcclusionCulling = true;
   bool ClosedSurfaceCulling = true;
@@ -385,6 +399,16 @@ private:
   {                                                                                                \
     return this->GetLightingSettings()->GetLightCullingBound();                                    \
   }                                                                                                \
+  void SetLightingWithoutLights(bool on)                                                           \
+  {                                                                                                \
+    this->GetLightingSettings()->SetLightingWithoutLights(on);                                     \
+  }                                                                                                \
+  bool GetLightingWithoutLights()                                                                  \
+  {                                                                                                \
+    return this->GetLightingSettings()->GetLightingWithoutLights();                                \
+  }                                                                                                \
+  void LightingWithoutLightsOn() { this->SetLightingWithoutLights(true); }                         \
+  void LightingWithoutLightsOff() { this->SetLightingWithoutLights(false); }                       \
   void SetDepthPrePass(int mode)                                                                   \
   {                                                                                                \
     this->GetLightingSettings()->SetDepthPrePass(mode);                                            \

@@ -58,6 +58,9 @@ struct vtkPhongPlanOptions
   /// the depth pre-pass: VTK's fragment shader with no lighting code at all, so that the
   /// pass costs what an unlit draw does (vtkPhongDepthPrePass.h)
   bool DepthOnly = false;
+  /// surfaces VTK would light, with no switched-on light: the model's emission and ambient
+  /// term instead of VTK's unlit colours (vtkPhongLightingSettings::LightingWithoutLights)
+  bool LightingWithoutLights = false;
 };
 
 /**

@@ -118,11 +118,12 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
     return plan;
   }
   const std::vector<vtkLight*> switchedOn = vtkPhongLightGeometry::SwitchedOn(ren);
-  // VTK lights a primitive when it has at least one light; the equation still
-  // holds without lights (emission and ka*Ca*Ia), for surfaces VTK would light.
+  // VTK lights a primitive when it has at least one light, and draws it unlit (its colours
+  // as they are) without. The equation still holds without lights (emission and ka*Ca*Ia):
+  // surfaces VTK would light show that only when the user asks (LightingWithoutLights).
   const bool lit = state.LightComplexity > 0;
-  const bool litWithoutLights =
-    !lit && switchedOn.empty() && front->GetLighting() && state.IsTriangles;
+  const bool litWithoutLights = options.LightingWithoutLights && !lit && switchedOn.empty() &&
+    front->GetLighting() && state.IsTriangles;
   const bool geometryView = IsGeometryView(options.DebugView);
   if ((!lit && !litWithoutLights) || (litWithoutLights && geometryView))
   {

@@ -201,6 +201,12 @@ void vtkPhongSurfaceRepresentation::SetLightCullingBound(double bound)
 }
 
 //------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetLightingWithoutLights(int on)
+{
+  this->LightingSettings->SetLightingWithoutLights(on != 0);
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetClosedSurfaceCulling(int cull)
 {
   this->LightingSettings->SetClosedSurfaceCulling(cull != 0);

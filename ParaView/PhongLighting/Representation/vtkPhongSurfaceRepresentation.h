@@ -71,11 +71,14 @@ public:
    * The lighting settings of both mappers (full resolution and level of detail), one
    * vtkPhongLightingSettings object (where each is documented): the debug view
    * (vtkPhongLightingSettings::DebugViews; default 0, Final), the light the SingleLight view
-   * shows, and light culling's bound (default 0.5 / 255; NaN refused).
+   * shows, light culling's bound (default 0.5 / 255; NaN refused), and whether surfaces with
+   * no light switched on show emission and ambient (default off: unlit, as ParaView's
+   * Surface).
    */
   void SetDebugView(int view);
   void SetDebugLightIndex(int index);
   void SetLightCullingBound(double bound);
+  void SetLightingWithoutLights(int on);
 
   /**
    * Culling of the hidden back faces of closed surfaces seen from outside

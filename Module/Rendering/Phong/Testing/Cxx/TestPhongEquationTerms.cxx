@@ -146,13 +146,16 @@ int TestPhongEquationTerms(int, char*[])
     ExpectColor(checks, scene.Centre(), { 0.0, 0.0, 0.0 }, "spot outside");
   }
 
-  { // No light at all: C = E + ka*Ca*Ia (stock VTK would add kd*Cd, unlit)
+  { // No light at all: unlit as stock VTK draws it, C = ka*Ca + kd*Cd (emission unused)
     TermScene scene;
     scene.Material->SetAmbient(0.5);
-    scene.Material->SetDiffuse(1.0);
+    scene.Material->SetDiffuse(0.5);
     scene.Material->SetColor(0.8, 0.6, 0.4);
     scene.Material->SetEmission(0.1, 0.0, 0.0);
-    ExpectColor(checks, scene.Centre(), { 0.5, 0.3, 0.2 }, "no lights");
+    ExpectColor(checks, scene.Centre(), { 0.8, 0.6, 0.4 }, "no lights: unlit");
+    // LightingWithoutLights: what the model gives without a light, C = E + ka*Ca*Ia.
+    vtkPhongPolyDataMapper::SafeDownCast(scene.Actor->GetMapper())->LightingWithoutLightsOn();
+    ExpectColor(checks, scene.Centre(), { 0.5, 0.3, 0.2 }, "no lights, LightingWithoutLights");
   }
 
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -22,8 +22,10 @@ COMPOSITE = "vtkCompositePolyDataMapper" if VTK_9_3 else "vtkCompositePolyDataMa
 checks = Checks()
 
 
-def unmodified_script():
-    """What a PyVista user's code does, with no vtkPhong name in it."""
+def unmodified_script(lights=True):
+    """What a PyVista user's code does, with no vtkPhong name in it; without lights, as
+    PyVista's lighting=None or remove_all_lights() leaves the renderer (a colour map's true
+    colours). Returns the mapper and the picture."""
     sphere = vtkSphereSource()
     sphere.SetThetaResolution(48)
     sphere.SetPhiResolution(48)
@@ -34,9 +36,13 @@ def unmodified_script():
     actor.GetProperty().SetInterpolationToPhong()
     actor.GetProperty().SetSpecular(0.5)
     actor.GetProperty().SetSpecularPower(30.0)
+    actor.GetProperty().SetColor(0.2, 0.6, 0.9)
     renderer = vtkRenderer()
     renderer.AddActor(actor)
-    vtkLightKit().AddLightsToRenderer(renderer)
+    if lights:
+        vtkLightKit().AddLightsToRenderer(renderer)
+    else:
+        renderer.AutomaticLightCreationOff()
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetSize(120, 120)
@@ -47,8 +53,7 @@ def unmodified_script():
     grab.SetInput(window)
     grab.ReadFrontBufferOff()
     grab.Update()
-    pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
-    return mapper, int(pixels.max())
+    return mapper, vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
 
 
 before = vtkPolyDataMapper()
@@ -72,7 +77,8 @@ for name, phong in (("vtkOpenGLPolyDataMapper", "vtkPhongPolyDataMapper"),
 checks.expect(before.GetClassName() == "vtkOpenGLPolyDataMapper",
               "a mapper made before the switch keeps its class")
 
-mapper, brightest = unmodified_script()
+mapper, picture = unmodified_script()
+brightest = int(picture.max())
 checks.expect(mapper.GetClassName() == "vtkPhongPolyDataMapper",
               "the unmodified script's mapper is " + mapper.GetClassName())
 signature = mapper.GetLastShaderSignature() if hasattr(mapper, "GetLastShaderSignature") else ""
@@ -80,7 +86,17 @@ checks.expect("DIRECTIONAL" in signature and "SPECULAR" in signature,
               "it drew with vtkPhong's shader, the light kit's lights directional: " + signature)
 checks.expect(brightest > 100, "something lit is on screen (brightest %d)" % brightest)
 
+# No light switched on: unlit, exactly as VTK draws it (not black, not emission and ambient).
+mapper, unlit = unmodified_script(lights=False)
+checks.expect(mapper.GetClassName() == "vtkPhongPolyDataMapper", "no lights: vtkPhong's mapper")
+
 vtkphong.overrides.disable()
+stock_mapper, stock_unlit = unmodified_script(lights=False)
+checks.expect(stock_mapper.GetClassName() == "vtkOpenGLPolyDataMapper", "VTK's mapper to compare")
+difference = int(abs(unlit - stock_unlit).max())
+checks.expect(difference <= 1 and int(unlit.max()) > 200,
+              "no lights: the colours as stock VTK draws them (largest difference %d, "
+              "brightest %d)" % (difference, int(unlit.max())))
 checks.expect(not vtkphong.overrides.enabled() and
               vtkPolyDataMapper().GetClassName() == "vtkOpenGLPolyDataMapper",
               "switched off, VTK's mapper again")

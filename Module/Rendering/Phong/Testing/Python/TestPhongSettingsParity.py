@@ -55,7 +55,8 @@ for kind, names in setters.items():
 
 # 2. Each mapper setter reaches the settings object; defaults and clamps are the object's.
 values = {"DebugView": 6, "DebugLightIndex": 3, "ShaderSpecialization": False,
-          "InterpolatedDotProducts": False, "LightCullingBound": 0.25, "DepthPrePass": 1,
+          "InterpolatedDotProducts": False, "LightCullingBound": 0.25,
+          "LightingWithoutLights": True, "DepthPrePass": 1,
           "DepthPrePassOcclusionCulling": False, "ClosedSurfaceCulling": False,
           "MaximumNumberOfShaderPrograms": 7}
 defaults = Settings()
