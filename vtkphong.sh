@@ -19,6 +19,11 @@
 #                          by debootstrap (VTKPHONG_DEBIAN13_ROOT, default
 #                          /var/tmp/vtkphong/trixie), this tree bind-mounted into it, builds
 #                          in ./build-debian13 and ./build-paraview-debian13
+#   ./vtkphong.sh test-forky [command]
+#                          the same on Debian testing "forky" (VTK 9.6, ParaView 6.1 on the
+#                          system VTK): VTKPHONG_FORKY_ROOT, default /var/tmp/vtkphong/forky;
+#                          builds in ./build-forky and ./build-paraview-forky
+#   ./vtkphong.sh build    install what is missing and build (no test)
 #   ./vtkphong.sh test-asan
 #                          build with AddressSanitizer + UndefinedBehaviorSanitizer
 #                          (into ./build-asan) and run the C++ tests; any report in
@@ -41,12 +46,11 @@ paraview_build="${VTKPHONG_PARAVIEW_BUILD_DIR:-$root/build-paraview}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
 # What each Debian release needs, in one place, chosen from /etc/os-release: the packages
-# (the VTK stage; the ParaView stage: python3-paraview conflicts with python3-vtk9 and is
-# never installed, its .deb is unpacked into the ParaView build tree instead) and ParaView's
-# version, which names its CMake package and plugin directories. Debian 12 (bookworm): VTK
-# 9.1, ParaView 5.11. Debian 13 (trixie): VTK 9.3, ParaView 5.13, OpenMesh 11, OpenImageIO
-# 2.5, under the same package names (the t64 renames touch only libraries these pull in), so
-# the lists are shared and a release adds its own to them here when that changes.
+# and ParaView's version, which names its CMake package and plugin directories. Debian 12
+# (bookworm): VTK 9.1, ParaView 5.11. Debian 13 (trixie): VTK 9.3, ParaView 5.13, OpenMesh 11,
+# OpenImageIO 2.5. Debian testing (forky): VTK 9.6, ParaView 6.1 on the system VTK,
+# OpenImageIO 3.1, assimp 6. The package names are the same (the t64 renames touch only
+# libraries these pull in), so the lists are shared and a release adds its own to them here.
 packages=(
   cmake g++ make pkg-config
   libvtk9-dev python3-vtk9 python3-numpy python3-matplotlib
@@ -57,8 +61,17 @@ packages=(
 )
 paraview_packages=(paraview paraview-dev openmpi-bin)
 release="$(. /etc/os-release && echo "${VERSION_CODENAME:-}")"
+# ParaView on its own VTK (Debian 12 and 13): python3-paraview conflicts with python3-vtk9,
+# so its .deb is unpacked into the ParaView build tree. From Debian testing on, ParaView is
+# built on the system VTK and python3-paraview installs beside python3-vtk9.
+paraview_python_installed=0
 case "$release" in
   trixie) paraview_version=5.13 ;;
+  forky)
+    paraview_version=6.1
+    paraview_packages+=(python3-paraview)
+    paraview_python_installed=1
+    ;;
   *) paraview_version=5.11 ;; # bookworm
 esac
 
@@ -100,7 +113,9 @@ extract_meshes() {
 
 build_paraview_plugin() {
   local unpacked="$paraview_build/python3-paraview"
-  if [ ! -d "$unpacked/usr/lib/python3/dist-packages/paraview" ]; then
+  if [ "$paraview_python_installed" = 1 ]; then
+    unpacked=/
+  elif [ ! -d "$unpacked/usr/lib/python3/dist-packages/paraview" ]; then
     mkdir -p "$paraview_build/deb"
     (cd "$paraview_build/deb" && apt-get download python3-paraview)
     dpkg-deb -x "$paraview_build"/deb/python3-paraview_*.deb "$unpacked"
@@ -145,77 +160,101 @@ with_display() {
   xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
 }
 
-# Debian 13 from a Debian 12 host: a trixie root (debootstrap, made once and reused), this
-# tree bind-mounted into it at the same path, and `./vtkphong.sh test` run inside, which
-# installs trixie's packages with apt in the root. Mounts are undone whatever happens.
-debian13_root="${VTKPHONG_DEBIAN13_ROOT:-/var/tmp/vtkphong/trixie}"
-debian13_mounts=()
+# Debian 13 (trixie) and Debian testing (forky) from a Debian 12 host: a root made by
+# debootstrap (made once and reused), this tree bind-mounted into it at the same path, and
+# `./vtkphong.sh test` (or another command) run inside, which installs that release's
+# packages with apt in the root. Mounts are undone whatever happens.
+release_mounts=()
 
-debian13_unmount() {
-  local i
-  for ((i = ${#debian13_mounts[@]} - 1; i >= 0; i--)); do
-    umount "${debian13_mounts[i]}" 2>/dev/null || umount -l "${debian13_mounts[i]}" || true
-  done
-  debian13_mounts=()
+release_root() { # release_root CODENAME
+  case "$1" in
+    trixie) echo "${VTKPHONG_DEBIAN13_ROOT:-/var/tmp/vtkphong/trixie}" ;;
+    forky) echo "${VTKPHONG_FORKY_ROOT:-/var/tmp/vtkphong/forky}" ;;
+  esac
 }
 
-debian13_mount() { # debian13_mount SOURCE TARGET-IN-ROOT [mount options...]
-  local source="$1" target="$debian13_root$2"
-  shift 2
+release_build_suffix() { # the build directories' suffix: build-debian13, build-forky
+  case "$1" in
+    trixie) echo debian13 ;;
+    *) echo "$1" ;;
+  esac
+}
+
+release_unmount() {
+  local i
+  for ((i = ${#release_mounts[@]} - 1; i >= 0; i--)); do
+    umount "${release_mounts[i]}" 2>/dev/null || umount -l "${release_mounts[i]}" || true
+  done
+  release_mounts=()
+}
+
+release_mount() { # release_mount ROOT SOURCE TARGET-IN-ROOT [mount options...]
+  local target="$1$3" source="$2"
+  shift 3
   mkdir -p "$target"
   mount "$@" "$source" "$target"
-  debian13_mounts+=("$target")
+  release_mounts+=("$target")
 }
 
-debian13_create_root() {
-  [ -f "$debian13_root/.vtkphong-root" ] && return 0
+release_create_root() { # release_create_root CODENAME ROOT
+  local codename="$1" root_dir="$2"
+  [ -f "$root_dir/.vtkphong-root" ] && return 0
   command -v debootstrap >/dev/null 2>&1 ||
     { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y debootstrap; }
   # Into a scratch directory first: an interrupted debootstrap is never mistaken for a root.
-  local partial="$debian13_root.partial"
+  local partial="$root_dir.partial" script=()
+  # Bookworm's debootstrap has no script for testing: sid's bootstraps it.
+  [ -e "/usr/share/debootstrap/scripts/$codename" ] || script=(/usr/share/debootstrap/scripts/sid)
   rm -rf "$partial"
-  mkdir -p "$(dirname "$debian13_root")"
-  debootstrap --variant=minbase trixie "$partial" http://deb.debian.org/debian
+  mkdir -p "$(dirname "$root_dir")"
+  debootstrap --variant=minbase "$codename" "$partial" http://deb.debian.org/debian "${script[@]}"
+  # Testing's Release file can be past its Valid-Until on the mirror.
+  echo 'Acquire::Check-Valid-Until "false";' >"$partial/etc/apt/apt.conf.d/99vtkphong-valid"
   # Services never start in the root (package scripts ask policy-rc.d).
   printf '#!/bin/sh\nexit 101\n' >"$partial/usr/sbin/policy-rc.d"
   chmod +x "$partial/usr/sbin/policy-rc.d"
   touch "$partial/.vtkphong-root"
-  mv "$partial" "$debian13_root"
+  mv "$partial" "$root_dir"
 }
 
-test_debian13() {
+test_release() { # test_release CODENAME [COMMAND]
+  local codename="$1" inner="${2:-test}"
   if [ "$(id -u)" -ne 0 ]; then
     # chroot and mount need root; the environment (root dir, compiler launcher) goes along.
-    command -v sudo >/dev/null 2>&1 || { echo "vtkphong.sh test-debian13: run as root" >&2; exit 1; }
-    exec sudo --preserve-env "$root/vtkphong.sh" test-debian13 "$@"
+    command -v sudo >/dev/null 2>&1 || { echo "vtkphong.sh: run as root" >&2; exit 1; }
+    exec sudo --preserve-env "$root/vtkphong.sh" "test-$(release_build_suffix "$codename")" \
+      "$inner"
   fi
-  debian13_create_root
-  cp /etc/resolv.conf "$debian13_root/etc/resolv.conf"
+  local root_dir suffix
+  root_dir="$(release_root "$codename")"
+  suffix="$(release_build_suffix "$codename")"
+  release_create_root "$codename" "$root_dir"
+  cp /etc/resolv.conf "$root_dir/etc/resolv.conf"
   # Unmount on every way out: a signal exits, and exiting runs the EXIT trap.
-  trap debian13_unmount EXIT
+  trap release_unmount EXIT
   trap 'exit 130' INT TERM HUP
-  debian13_mount proc /proc -t proc
-  debian13_mount sysfs /sys -t sysfs
-  debian13_mount /dev /dev --bind
-  debian13_mount /dev/pts /dev/pts --bind
-  debian13_mount /dev/shm /dev/shm --bind
-  debian13_mount "$root" "$root" --bind
+  release_mount "$root_dir" proc /proc -t proc
+  release_mount "$root_dir" sysfs /sys -t sysfs
+  release_mount "$root_dir" /dev /dev --bind
+  release_mount "$root_dir" /dev/pts /dev/pts --bind
+  release_mount "$root_dir" /dev/shm /dev/shm --bind
+  release_mount "$root_dir" "$root" "$root" --bind
   local launcher=()
   if [ -n "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ] && [ -d "${CCACHE_DIR:-$HOME/.ccache}" ]; then
     # Share the host's compiler cache (its base_dir makes hits path-independent).
-    debian13_mount "${CCACHE_DIR:-$HOME/.ccache}" /root/.ccache --bind
-    chroot "$debian13_root" sh -c 'command -v ccache >/dev/null' ||
-      chroot "$debian13_root" env DEBIAN_FRONTEND=noninteractive \
+    release_mount "$root_dir" "${CCACHE_DIR:-$HOME/.ccache}" /root/.ccache --bind
+    chroot "$root_dir" sh -c 'command -v ccache >/dev/null' ||
+      chroot "$root_dir" env DEBIAN_FRONTEND=noninteractive \
         sh -c 'apt-get update && apt-get install -y --no-install-recommends ccache'
     launcher=(CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache)
   fi
   local status=0
-  chroot "$debian13_root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 \
+  chroot "$root_dir" /usr/bin/env -i HOME=/root LANG=C.UTF-8 \
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin "${launcher[@]}" \
-    VTKPHONG_BUILD_DIR="$root/build-debian13" \
-    VTKPHONG_PARAVIEW_BUILD_DIR="$root/build-paraview-debian13" \
-    "$root/vtkphong.sh" "${1:-test}" || status=$?
-  debian13_unmount
+    VTKPHONG_BUILD_DIR="$root/build-$suffix" \
+    VTKPHONG_PARAVIEW_BUILD_DIR="$root/build-paraview-$suffix" \
+    "$root/vtkphong.sh" "$inner" || status=$?
+  release_unmount
   trap - EXIT INT TERM HUP
   return "$status"
 }
@@ -242,7 +281,14 @@ case "$command" in
     run_paraview_tests
     ;;
   test-debian13)
-    test_debian13 "${2:-test}"
+    test_release trixie "${2:-test}"
+    ;;
+  test-forky)
+    test_release forky "${2:-test}"
+    ;;
+  build)
+    install_packages
+    build_project
     ;;
   paraview-bench)
     install_packages "${paraview_packages[@]}"
@@ -301,7 +347,7 @@ case "$command" in
       -T "$build/Testing/Temporary"
     ;;
   *)
-    sed -n '2,34p' "$0" >&2
+    sed -n '2,/^set -euo/p' "$0" | sed '$d' >&2
     exit 2
     ;;
 esac

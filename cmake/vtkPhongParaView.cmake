@@ -1,7 +1,9 @@
-# Finds Debian's ParaView (paraview-dev) and, through it, the VTK it bundles: ParaView 5.11
-# with a VTK 9.2 snapshot on Debian 12, ParaView 5.13 with VTK 9.3 on Debian 13.
+# Finds Debian's ParaView (paraview-dev) and, through it, its VTK: ParaView 5.11 with a
+# bundled VTK 9.2 snapshot on Debian 12, ParaView 5.13 with a bundled VTK 9.3 on Debian 13,
+# ParaView 6.1 on the system VTK (9.6) on Debian testing, where python3-paraview installs
+# beside python3-vtk9 and neither trap below exists (VTKPHONG_PARAVIEW_PYTHON_ROOT is /).
 #
-# Two Debian traps are handled here:
+# Two Debian traps of the bundled VTK are handled here:
 #
 # - paraview-dev's CMake package imports targets whose files only python3-paraview ships
 #   (VTK's and ParaView's Python modules, pvpython). python3-paraview conflicts with
@@ -16,14 +18,14 @@
 
 # The version names paraview-dev's directories (CMake package, plugins); by default the one
 # installed.
-file(GLOB vtkphong_paraview_dirs LIST_DIRECTORIES true "/usr/lib/x86_64-linux-gnu/cmake/paraview-5.*")
+file(GLOB vtkphong_paraview_dirs LIST_DIRECTORIES true "/usr/lib/x86_64-linux-gnu/cmake/paraview-*")
 set(vtkphong_paraview_version "5.11")
 if (vtkphong_paraview_dirs)
   list(GET vtkphong_paraview_dirs 0 vtkphong_paraview_dir)
   string(REGEX REPLACE "^.*/paraview-" "" vtkphong_paraview_version "${vtkphong_paraview_dir}")
 endif ()
 set(VTKPHONG_PARAVIEW_VERSION "${vtkphong_paraview_version}"
-  CACHE STRING "ParaView's major.minor version (5.11 on Debian 12, 5.13 on Debian 13)")
+  CACHE STRING "ParaView's major.minor version (5.11 on Debian 12, 5.13 on Debian 13, 6.1 on testing)")
 set(VTKPHONG_PARAVIEW_CMAKE_DIR
   "/usr/lib/x86_64-linux-gnu/cmake/paraview-${VTKPHONG_PARAVIEW_VERSION}"
   CACHE PATH "paraview-dev's CMake package directory")
@@ -37,7 +39,8 @@ foreach (targets_file IN ITEMS
     "${VTKPHONG_PARAVIEW_CMAKE_DIR}/ParaViewTools-targets.cmake"
     "${VTKPHONG_PARAVIEW_CMAKE_DIR}/ParaViewPythonIncubator-targets.cmake")
   if (NOT EXISTS "${targets_file}")
-    if (targets_file MATCHES "Incubator")
+    # The incubator is 5.13's; ParaView on the system VTK has no vtk/ package of its own.
+    if (targets_file MATCHES "Incubator|/vtk/")
       continue ()
     endif ()
     message(FATAL_ERROR "${targets_file} is missing: install paraview-dev.")
@@ -62,7 +65,7 @@ find_package(ParaView "${VTKPHONG_PARAVIEW_VERSION}" REQUIRED
     VTKExtensionsFiltersRendering)
 # ParaView 5.13's VTK::hdf5 and VTK::netcdf, linked through RemotingViews, name HDF5's and
 # netCDF's own targets, which its VTK package finds only when those components are asked for.
-if (TARGET VTK::hdf5 AND NOT TARGET hdf5::hdf5)
+if (TARGET VTK::hdf5 AND NOT TARGET hdf5::hdf5 AND IS_DIRECTORY "${VTKPHONG_PARAVIEW_CMAKE_DIR}/vtk")
   find_package(VTK REQUIRED
     PATHS "${VTKPHONG_PARAVIEW_CMAKE_DIR}/vtk" NO_DEFAULT_PATH
     COMPONENTS hdf5 netcdf)
@@ -70,6 +73,7 @@ endif ()
 message(STATUS "vtkPhong: building against ParaView ${ParaView_VERSION} (VTK ${VTK_VERSION})")
 
 set(hierarchy_root "${VTKPHONG_PARAVIEW_PYTHON_ROOT}/usr/lib/x86_64-linux-gnu/vtk/hierarchy")
+string(REPLACE "//" "/" hierarchy_root "${hierarchy_root}")
 if (NOT IS_DIRECTORY "${hierarchy_root}")
   message(FATAL_ERROR
     "No ParaView wrapping hierarchy under ${VTKPHONG_PARAVIEW_PYTHON_ROOT}: unpack "

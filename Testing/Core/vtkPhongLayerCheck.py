@@ -34,7 +34,7 @@ MODULE_RANKS = {
 # The rendering module's files by class (file name without extension).
 RENDERING_RANKS = {
     # foundation: no vtkPhong include but each other
-    "vtkPhongCompatibility": 0, "vtkPhongProblemLog": 0, "vtkPhongShaderFeatures": 0,
+    "vtkPhongCompatibility": 0, "vtkPhongOpenGL": 0, "vtkPhongProblemLog": 0, "vtkPhongShaderFeatures": 0,
     "vtkPhongRadixSort": 0, "vtkPhongLightingSettings": 0, "vtkPhongProperty": 0,
     # the plan, shared maths, small helpers
     "vtkPhongShaderPlan": 1, "vtkPhongMaterial": 1, "vtkPhongLightGeometry": 1,

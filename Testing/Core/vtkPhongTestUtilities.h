@@ -40,7 +40,7 @@
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtk_glew.h"
+#include "vtkPhongOpenGL.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>

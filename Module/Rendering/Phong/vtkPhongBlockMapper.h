@@ -40,7 +40,7 @@ using vtkPhongStockBlockMapper = vtkOpenGLBatchedPolyDataMapper;
 // VTK 9.1's vtkCompositeMapperHelper2.h uses these without including them.
 #include "vtkColor.h"
 #include "vtkHardwareSelector.h"
-#include "vtk_glew.h"
+#include "vtkPhongOpenGL.h"
 
 #include "vtkCompositeMapperHelper2.h"
 using vtkPhongStockBlockMapper = vtkCompositeMapperHelper2;

@@ -27,7 +27,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
 #include "vtkTexture.h"
-#include "vtk_glew.h"
+#include "vtkPhongOpenGL.h"
 
 #include <algorithm>
 #include <array>

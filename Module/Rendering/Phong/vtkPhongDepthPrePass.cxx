@@ -11,7 +11,7 @@
 #include "vtkPhongScopedCulling.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
-#include "vtk_glew.h"
+#include "vtkPhongOpenGL.h"
 
 #include <cmath>
 #include <initializer_list>

@@ -15,7 +15,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkPhongOpenGL.h"
 
 #include "vtkPhongFloatDisplayFS.h"
 

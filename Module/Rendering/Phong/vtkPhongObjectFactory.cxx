@@ -2,6 +2,9 @@
 
 #include "vtkPhongCompatibility.h"
 #include "vtkPhongCompositePolyDataMapper.h"
+#if VTKPHONG_VTK_9_3
+#include "vtkPhongCompositeDelegator.h"
+#endif
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkSmartPointer.h"
 #include "vtkVersion.h"
@@ -20,6 +23,17 @@ vtkObject* NewCompositeMapper()
   return vtkPhongCompositePolyDataMapper::New();
 }
 
+#if VTKPHONG_VTK_9_3
+// vtkCompositePolyDataMapper::New() never asks the factory, but every composite mapper makes
+// its delegators through it (vtkCompositePolyDataMapperDelegator::New): VTK's own composite
+// mapper, made by name (PyVista's add_composite, ParaView's Surface), then draws its blocks
+// with vtkPhong's block mapper, with the default lighting settings.
+vtkObject* NewDelegator()
+{
+  return vtkPhongCompositeDelegator::New();
+}
+#endif
+
 // The overridden VTK class, its vtkPhong replacement, and how to make one.
 struct Override
 {
@@ -33,6 +47,7 @@ const Override Overrides[] = {
   { "vtkOpenGLPolyDataMapper", "vtkPhongPolyDataMapper", NewPolyDataMapper },
 #if VTKPHONG_VTK_9_3
   { "vtkCompositePolyDataMapper", "vtkPhongCompositePolyDataMapper", NewCompositeMapper },
+  { "vtkCompositePolyDataMapperDelegator", "vtkPhongCompositeDelegator", NewDelegator },
 #else
   { "vtkCompositePolyDataMapper2", "vtkPhongCompositePolyDataMapper", NewCompositeMapper },
 #endif

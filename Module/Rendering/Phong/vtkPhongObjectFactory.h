@@ -12,8 +12,17 @@
  * Python: `import vtkphong.overrides`. `vtkPolyDataMapper::New()` asks the factory; the
  * concrete OpenGL classes' own New() does not (VTK makes them with `new`), so the overrides
  * of `vtkOpenGLPolyDataMapper` and of the composite mappers answer code that asks the
- * factory by name (vtkObjectFactory::CreateInstance). ParaView's surface representation
- * makes its composite mapper directly: there, the "Phong Surface" plugin is the way.
+ * factory by name (vtkObjectFactory::CreateInstance).
+ *
+ * Composite data made by VTK's own composite mapper: from VTK 9.3 on,
+ * `vtkCompositePolyDataMapper::New()` does not ask the factory, but every composite mapper
+ * makes its delegators through `vtkCompositePolyDataMapperDelegator::New()`, which does; its
+ * override gives VTK's own composite mapper (PyVista's `add_composite`, ParaView's Surface
+ * representation) vtkPhong's block mappers, with the default lighting settings. On VTK 9.1,
+ * `vtkCompositePolyDataMapper2::New()` and its helpers' New() never ask the factory: a
+ * composite mapper made by its class name (`vtkCompositePolyDataMapper2()` in Python) stays
+ * VTK's there (docs/compatibility.md); vtkPhongCompositePolyDataMapper, or "Phong Surface"
+ * in ParaView, is the way.
  *
  * Who wins: the factory asks the registered factories in registration order and takes the
  * first answer. When the switch is turned on, the same overrides are disabled in the

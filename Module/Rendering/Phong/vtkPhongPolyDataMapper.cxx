@@ -26,7 +26,7 @@
 #include "vtkShaderProperty.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "vtk_glew.h"
+#include "vtkPhongOpenGL.h"
 #include <algorithm>
 
 template class vtkPhongLightingMapper<vtkOpenGLPolyDataMapper>;

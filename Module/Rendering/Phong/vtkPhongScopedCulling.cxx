@@ -3,7 +3,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkRenderer.h"
-#include "vtk_glew.h"
+#include "vtkPhongOpenGL.h"
 
 //------------------------------------------------------------------------------
 vtkPhongScopedCulling::vtkPhongScopedCulling(vtkRenderer* ren, unsigned int faces)

@@ -15,7 +15,7 @@
 #include "vtkPhongProperty.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
-#include "vtk_glew.h"
+#include "vtkPhongOpenGL.h"
 
 #include <algorithm>
 #include <cmath>

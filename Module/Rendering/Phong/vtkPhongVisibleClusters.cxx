@@ -11,7 +11,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
-#include "vtk_glew.h"
+#include "vtkPhongOpenGL.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,14 @@
 """Importing this module makes VTK's object factory return vtkPhong's mappers.
 
-After ``import vtkphong.overrides``, ``vtkPolyDataMapper()`` (and
-``vtkOpenGLPolyDataMapper()``, and VTK's composite mapper) made anywhere in the
-process, by the script itself, by PyVista, vedo or ParaView's Python, is a
-vtkPhong mapper: an unmodified VTK script lights with vtkPhong. Objects made
-before the import keep their class.
+After ``import vtkphong.overrides``, every ``vtkPolyDataMapper()`` made
+anywhere in the process, by the script itself, by PyVista, vedo or ParaView's
+Python, is a vtkPhong mapper: an unmodified VTK script lights with vtkPhong.
+Composite data: from VTK 9.3 on, VTK's own ``vtkCompositePolyDataMapper()``
+(PyVista's ``add_composite``) draws its blocks with vtkPhong's block mappers
+(its delegators come from the factory). On VTK 9.1, a
+``vtkCompositePolyDataMapper2()`` made by name stays VTK's: its ``New()`` and
+its helpers' never ask the factory; code that asks the factory for it by name
+gets vtkPhong's. Objects made before the import keep their class.
 
 ``enable()`` and ``disable()`` switch the overrides at run time;
 ``enabled()`` tells whether they are on. See vtkPhongObjectFactory.
