@@ -118,7 +118,7 @@ private:
   unsigned int HiddenFaces(
     vtkRenderer* ren, vtkActor* act, const std::vector<vtkPhongBufferBlock>& blocks);
   void DrawSurfaces(vtkRenderer* ren, vtkActor* act, const std::vector<vtkPhongBufferBlock>& blocks,
-    bool everyBlock);
+    bool everyBlock, bool allowed);
   void DrawDepthPass(vtkRenderer* ren, vtkActor* act,
     const std::vector<vtkPhongBufferBlock>& blocks, bool culling, double triangles);
 

@@ -225,7 +225,7 @@ void vtkPhongLightingMapper<Base>::RenderPieceDraw(vtkRenderer* ren, vtkActor* a
   const unsigned int hiddenFaces = everyBlock ? this->HiddenFaces(ren, act, blocks) : 0;
   this->Internal->UsedClosedSurfaceCulling = hiddenFaces != 0;
   vtkPhongScopedCulling culling(ren, hiddenFaces);
-  this->DrawSurfaces(ren, act, blocks, everyBlock);
+  this->DrawSurfaces(ren, act, blocks, everyBlock, allowed);
 }
 
 //------------------------------------------------------------------------------
@@ -253,12 +253,12 @@ unsigned int vtkPhongLightingMapper<Base>::HiddenFaces(
 // Plainly or with the depth pre-pass (vtkPhongDepthPrePass decides and draws), whose depth
 // pass may leave out the triangles hidden in the last frame (vtkPhongVisibleClusters).
 template <class Base>
-void vtkPhongLightingMapper<Base>::DrawSurfaces(
-  vtkRenderer* ren, vtkActor* act, const std::vector<vtkPhongBufferBlock>& blocks, bool everyBlock)
+void vtkPhongLightingMapper<Base>::DrawSurfaces(vtkRenderer* ren, vtkActor* act,
+  const std::vector<vtkPhongBufferBlock>& blocks, bool everyBlock, bool allowed)
 {
   vtkPhongLightingSettings* settings = this->LightingSettings();
-  const int mode = this->VisibilityWorkAllowed() ? settings->GetDepthPrePass()
-                                                 : vtkPhongLightingSettings::DepthPrePassOff;
+  const int mode =
+    allowed ? settings->GetDepthPrePass() : vtkPhongLightingSettings::DepthPrePassOff;
   double triangles = 0.0;
   for (vtkPolyData* block : this->LitBlocks())
   {
