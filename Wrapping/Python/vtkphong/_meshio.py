@@ -151,14 +151,19 @@ def run_reader(path, directory, limits=None):
         raise RenderError("cannot read %s: %s" % (path, _child_failure(child, path, memory)))
 
 
+def address_space_limit():
+    """The address-space limit this process runs under (ulimit -v: the lower of the soft
+    and hard limits), in bytes, or None."""
+    limits = [limit for limit in resource.getrlimit(resource.RLIMIT_AS)
+              if limit != resource.RLIM_INFINITY and limit >= 0]
+    return min(limits) if limits else None
+
+
 def inherited_memory_limit(memory):
     """memory, lowered to the address-space limit this process runs under (ulimit -v):
     the child may not have more than its parent, whatever the default says."""
-    soft, hard = resource.getrlimit(resource.RLIMIT_AS)
-    for inherited in (soft, hard):
-        if inherited != resource.RLIM_INFINITY and inherited >= 0:
-            memory = min(memory, inherited)
-    return memory
+    inherited = address_space_limit()
+    return memory if inherited is None else min(memory, inherited)
 
 
 def _child_failure(child, path, memory):

@@ -25,7 +25,7 @@ import os
 import sys
 
 from vtkphong._errors import RenderError, UsageError
-from vtkphong._meshio import FORMATS, read_mesh
+from vtkphong._meshio import FORMATS, address_space_limit, read_mesh
 from vtkphong._rendering import OUTPUTS, render, write_image
 from vtkphong._scene import (CAMERA_LIMITS, DEBUG_VIEWS, INTERPOLATIONS, LIGHT_TYPES, LOBES,
                              WEIGHTINGS, check_size, scene_settings)
@@ -561,18 +561,11 @@ def _crash_reason(number, arguments, messages, runtime_lines):
     out_of_memory = any("bad_alloc" in line for line in runtime_lines) or (
         said and "Unable to allocate" in said)
     if out_of_memory:
-        limit = _address_space_limit()
+        limit = address_space_limit()
         return "out of memory rendering %s%s" % (
             mesh, " (address space limited to %d MB by ulimit -v)" % (limit >> 20) if limit else "")
     return "the renderer crashed (%s) on %s%s; please report it with the file" % (
         _signal_name(number), mesh, ", after VTK's error: " + said.rstrip(".") if said else "")
-
-
-def _address_space_limit():
-    """The address-space limit this process runs under, or None."""
-    import resource
-    soft = resource.getrlimit(resource.RLIMIT_AS)[0]
-    return None if soft == resource.RLIM_INFINITY else soft
 
 
 def _signal_name(number):
