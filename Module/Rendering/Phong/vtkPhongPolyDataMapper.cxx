@@ -78,7 +78,7 @@ vtkMTimeType vtkPhongPolyDataMapper::GetMTime()
 //------------------------------------------------------------------------------
 vtkPhongLightingSettings* vtkPhongPolyDataMapper::LightingSettings()
 {
-  return this->Internal->Settings.Get();
+  return this->GetLightingSettings();
 }
 
 //------------------------------------------------------------------------------
