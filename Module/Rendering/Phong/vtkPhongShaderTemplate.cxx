@@ -382,6 +382,12 @@ void vtkPhongShaderTemplate::SubstituteFragment(vtkShader* fragmentShader, const
   const std::string& lights, const Plan& plan) const
 {
   std::string fragment = fragmentShader->GetSource();
+  if (plan.Has(Feature::ShadingNormal))
+  {
+    // phongIsUnitLength reads a float's bits: core in GLSL 3.30, an extension for VTK's 1.50.
+    vtkShaderProgram::Substitute(fragment, "//VTK::System::Dec",
+      "//VTK::System::Dec\n#extension GL_ARB_shader_bit_encoding : enable", false);
+  }
   const std::string declarations = sums + lights + this->Resolve(vtkPhongFS, "Dec", plan);
   vtkShaderProgram::Substitute(
     fragment, "//VTK::Light::Dec", declarations + "//VTK::Light::Dec", false);

@@ -9,6 +9,17 @@
 //============================================================================
 
 //PHONG_SECTION Dec
+//PHONG_IF SHADING_NORMAL
+// Whether n has unit length, up to what float can normalize: false for zero, infinite and
+// NaN normals. NaN is caught on the bits: shader compilers rewrite a negated comparison
+// (!(x < y) becomes x >= y, Mesa 25's llvmpipe does), which NaN does not survive.
+bool phongIsUnitLength(vec3 n)
+{
+  float length2 = dot(n, n);
+  bool finite = (floatBitsToUint(length2) & 0x7f800000u) != 0x7f800000u;
+  return finite && abs(length2 - 1.0) < 0.5;
+}
+//PHONG_ENDIF
 // MATERIAL_UNIFORMS: VTK's material colours are uniform (no mapped scalars, no back
 // material). The products the shader needs are then uploaded ready-made: every uniform
 // read costs each fragment, and VTK's ambientIntensity * ambientColorUniform, ... would
@@ -63,8 +74,15 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_ENDIF
 //PHONG_IF NORMAL_FALLBACK
   // The face's geometric normal, for fragments whose normal is zero or NaN.
-  // Derivatives need uniform control flow, so it is computed for every fragment.
-  vec3 phongGeometricNormalVC = cross(dFdx(vertexVC.xyz), dFdy(vertexVC.xyz));
+  // Derivatives need uniform control flow, so it is computed for every fragment. Each
+  // derivative is scaled to its largest component first, so that the cross product neither
+  // overflows (coordinates of 1e20) nor underflows (1e-20) in float.
+  vec3 phongDxVC = dFdx(vertexVC.xyz);
+  vec3 phongDyVC = dFdy(vertexVC.xyz);
+  float phongDxMax = max(max(abs(phongDxVC.x), abs(phongDxVC.y)), abs(phongDxVC.z));
+  float phongDyMax = max(max(abs(phongDyVC.x), abs(phongDyVC.y)), abs(phongDyVC.z));
+  vec3 phongGeometricNormalVC = cross(phongDxMax > 0.0 ? phongDxVC / phongDxMax : phongDxVC,
+    phongDyMax > 0.0 ? phongDyVC / phongDyMax : phongDyVC);
 //PHONG_ENDIF
 
 //PHONG_SECTION Impl
@@ -87,7 +105,7 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_ENDIF
   // Normalized, a usable normal has length 1: normals that cancel out when interpolated, or
   // too short or too long to normalize in float, come out 0, infinite or NaN.
-  if (!(abs(dot(phongNormalVC, phongNormalVC) - 1.0) < 0.5))
+  if (!phongIsUnitLength(phongNormalVC))
   {
     phongNormalVC = phongViewVC;
 //PHONG_IF INTERPOLATED_DOTS
@@ -96,15 +114,15 @@ in vec3 phongSpecularLightBFVSOutput;
   }
 //PHONG_ENDIF
 //PHONG_IF NORMAL_FALLBACK
-  if (!(abs(dot(phongNormalVC, phongNormalVC) - 1.0) < 0.5)) // zero, NaN, too short or too long
+  if (!phongIsUnitLength(phongNormalVC))
   {
     float geometricLength = length(phongGeometricNormalVC);
     phongNormalVC = geometricLength > 0.0 ? phongGeometricNormalVC / geometricLength : phongViewVC;
-    if (!(dot(phongNormalVC, phongViewVC) >= 0.0))
+    if (dot(phongNormalVC, phongViewVC) < 0.0)
     {
       phongNormalVC = -phongNormalVC; // face the viewer, as VTK's normals do on back faces
     }
-    if (!(abs(dot(phongNormalVC, phongNormalVC) - 1.0) < 0.5))
+    if (!phongIsUnitLength(phongNormalVC))
     {
       phongNormalVC = phongViewVC;
     }

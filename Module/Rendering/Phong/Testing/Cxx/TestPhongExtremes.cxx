@@ -397,27 +397,36 @@ int TestPhongExtremes(int argc, char* argv[])
           bench.View.Renderer->GetActiveCamera()->SetParallelScale(1.2);
         } });
   }
-  cases.push_back({ "zero-length and NaN normals", 3e-4, 1e-4,
-    [](Bench& bench)
-    {
-      bench.Plane();
-      vtkNew<vtkFloatArray> normals;
-      normals->SetName("Normals");
-      normals->SetNumberOfComponents(3);
-      const vtkIdType count = bench.Mesh->GetNumberOfPoints();
-      normals->SetNumberOfTuples(count);
-      const float nan = std::numeric_limits<float>::quiet_NaN();
-      for (vtkIdType i = 0; i < count; ++i)
+  // The fallback to the face's own normal at every scale: VTK 9.4 scales its derivative
+  // normal so that 1e12 and 1e-12 coordinates neither overflow nor underflow in float.
+  for (const double scale : { 1.0, 1.0e12, 1.0e-12 })
+  {
+    const std::string name = scale == 1.0 ? std::string("zero-length and NaN normals")
+                                          : "zero-length and NaN normals, geometry scaled by " +
+        std::string(scale > 1.0 ? "1e12" : "1e-12");
+    cases.push_back({ name, scale == 1.0 ? 3e-4 : 5e-4, 1e-4,
+      [scale](Bench& bench)
       {
-        const float zero[3] = { 0.f, 0.f, 0.f }, bad[3] = { nan, nan, nan },
-                    up[3] = { 0.f, 0.f, 1.f };
-        normals->SetTypedTuple(i, i % 5 == 0 ? bad : (i % 3 == 0 ? zero : up));
-      }
-      bench.Mesh->GetPointData()->SetNormals(normals);
-      bench.Point(0.3, 0.2, 0.8);
-      bench.Directional(1.0, 1.0, 2.0);
-      bench.LookFrom(0.25, -0.35, 4.5);
-    } });
+        bench.Scale = scale;
+        bench.Plane();
+        vtkNew<vtkFloatArray> normals;
+        normals->SetName("Normals");
+        normals->SetNumberOfComponents(3);
+        const vtkIdType count = bench.Mesh->GetNumberOfPoints();
+        normals->SetNumberOfTuples(count);
+        const float nan = std::numeric_limits<float>::quiet_NaN();
+        for (vtkIdType i = 0; i < count; ++i)
+        {
+          const float zero[3] = { 0.f, 0.f, 0.f }, bad[3] = { nan, nan, nan },
+                      up[3] = { 0.f, 0.f, 1.f };
+          normals->SetTypedTuple(i, i % 5 == 0 ? bad : (i % 3 == 0 ? zero : up));
+        }
+        bench.Mesh->GetPointData()->SetNormals(normals);
+        bench.Point(0.3, 0.2, 0.8);
+        bench.Directional(1.0, 1.0, 2.0);
+        bench.LookFrom(0.25, -0.35, 4.5);
+      } });
+  }
   cases.push_back({ "light 1e-6 above the surface, A = 1/d^2", 1.0, 1e-2,
     [](Bench& bench)
     {
