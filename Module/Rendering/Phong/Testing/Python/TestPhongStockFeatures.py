@@ -783,7 +783,15 @@ def render(build, phong, cull_back_faces=False):
                   % ("vtkPhong" if phong else "stock VTK", errors))
     vtkMapper.SetResolveCoincidentTopology(coincident)
     names = sorted({m.GetClassName() for m in scene.mappers})
-    # Whether vtkPhong's lighting drew (not its fallback to VTK's): a signature is set.
+    # Whether vtkPhong's lighting drew (not its fallback to VTK's): a signature is set. The
+    # signature is the last draw's. From VTK 9.4 on, an actor's vertices are a draw of their
+    # own, unlit by stock VTK and so by vtkPhong: the surface is drawn again without them.
+    vertex_actors = [a for a in scene.renderer.GetActors()
+                     if a.GetProperty().GetVertexVisibility()]
+    for actor in vertex_actors:
+        actor.GetProperty().VertexVisibilityOff()
+    if vertex_actors:
+        scene.window.Render()
     lit = all(m.GetLastShaderSignature() for m in scene.mappers
               if hasattr(m, "GetLastShaderSignature"))
     scene.window.Finalize()
