@@ -31,9 +31,14 @@ from phong_paraview_testing import fail, load_plugin, prefer_pythonpath, report
 prefer_pythonpath()
 
 from paraview.simple import (  # noqa: E402 (after the path fix)
-    AddLight, Contour, CreateRenderView, GetParaViewVersion, ProcessIdScalars, Render,
+    AddLight, ColorBy, Contour, CreateRenderView, GetColorTransferFunction, GetParaViewVersion,
+    Render,
     ResetCamera, SaveScreenshot, Show, Sphere, Tessellate, Wavelet)
+import paraview.simple  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+# ParaView 6 renamed "Process Id Scalars" (array ProcessId) to "Process Ids" (PointProcessIds).
+ProcessIds = getattr(paraview.simple, "ProcessIds", None) or paraview.simple.ProcessIdScalars
 
 SIZE = (400, 300)
 
@@ -149,7 +154,7 @@ def main():
     print("ParaView %s, %d rank(s)" % (GetParaViewVersion(), ranks))
 
     sphere = Sphere(ThetaResolution=128, PhiResolution=64, Radius=0.5)
-    owners = ProcessIdScalars(Input=sphere)
+    owners = ProcessIds(Input=sphere)
     view = CreateRenderView()
     view.ViewSize = list(SIZE)
     view.OrientationAxesVisibility = 0
@@ -199,8 +204,11 @@ def main():
     check_back_face_culling(display, view, ranks, picture, args.out, args.server)
 
     # 3: each rank's piece in its own colour (red rank 0, blue rank 1, ...).
-    display.ColorArrayName = ["POINTS", "ProcessId"]
-    table = display.LookupTable
+    # ColorBy makes the lookup table (ParaView 6 no longer does on ColorArrayName alone).
+    owners.UpdatePipeline()
+    owner_array = "ProcessId" if "ProcessId" in owners.PointData.keys() else "PointProcessIds"
+    ColorBy(display, ("POINTS", owner_array))
+    table = display.LookupTable or GetColorTransferFunction(owner_array)
     table.InterpretValuesAsCategories = 1
     table.Annotations = sum(([str(r), str(r)] for r in range(ranks)), [])
     palette = [(1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.0, 0.8, 0.0), (1.0, 0.8, 0.0)]

@@ -91,12 +91,9 @@ void vtkPhongObjectFactory::SetOverridesEnabled(bool enabled)
   {
     return;
   }
-  for (const Override& entry : Overrides)
-  {
-    // Off in every factory registered so far (VTK's OpenGL2 one), or on again when
-    // vtkPhong's goes.
-    vtkObjectFactory::SetAllEnableFlags(!enabled, entry.VTKClass);
-  }
+  // Off in every factory registered so far (VTK's OpenGL2 one), or on again when vtkPhong's
+  // goes.
+  SetOtherFactoriesOverridesEnabled(!enabled);
   if (enabled)
   {
     factory = vtkSmartPointer<vtkPhongObjectFactory>::New();
@@ -110,6 +107,14 @@ void vtkPhongObjectFactory::SetOverridesEnabled(bool enabled)
 }
 
 //------------------------------------------------------------------------------
+void vtkPhongObjectFactory::SetOtherFactoriesOverridesEnabled(bool enabled)
+{
+  for (const Override& entry : Overrides)
+  {
+    vtkObjectFactory::SetAllEnableFlags(enabled, entry.VTKClass);
+  }
+}
+
 bool vtkPhongObjectFactory::GetOverridesEnabled()
 {
   return Registered() != nullptr;

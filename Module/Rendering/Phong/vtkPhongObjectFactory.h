@@ -59,6 +59,14 @@ public:
   static bool GetOverridesEnabled();
   ///@}
 
+  /**
+   * Switch off (or on again) the overrides of the classes vtkPhong overrides in every factory
+   * registered so far, so that a vtkPhong factory registered after them is asked first.
+   * SetOverridesEnabled does this; the factory library that VTK_AUTOLOAD_PATH loads does it
+   * before its factory is registered.
+   */
+  static void SetOtherFactoriesOverridesEnabled(bool enabled);
+
 protected:
   vtkPhongObjectFactory();
   ~vtkPhongObjectFactory() override = default;

@@ -61,10 +61,10 @@ in vec4 phongDirectionalPositionDotLVSOutput[@DIRECTIONAL_VEC4_COUNT@];
 //PHONG_ENDIF
 // Set by the fragment's main (vtkPhongFS.glsl) once the shading normal N is known:
 // N = phongInterpolatedNormalScale * n + phongViewWeight * V, one of the two weights 0.
-float phongInterpolatedNormalScale;
-float phongViewWeight;
+float phongInterpolatedNormalScale = 0.0; // set in main; initialized so that no compiler warns
+float phongViewWeight = 0.0;
 //PHONG_IF !PARALLEL
-float phongMinusInverseDistance; // -1/|P|
+float phongMinusInverseDistance = 0.0; // -1/|P|
 //PHONG_ENDIF
 //PHONG_ENDIF
 
