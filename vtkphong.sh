@@ -6,6 +6,11 @@
 #                          Blinn-Phong) and print the image's path
 #   ./vtkphong.sh test     run every test (ctest under Xvfb)
 #   ./vtkphong.sh bench    run the benchmarks and print their tables
+#   ./vtkphong.sh bench-growth [sizes]
+#                          big meshes against stock VTK, one process per measurement: a
+#                          closed sphere and an open terrain, 1M to 32M triangles (or the
+#                          comma-separated sizes given), with and without input normals
+#                          (docs/results/performance.md)
 #   ./vtkphong.sh extremes run the numerical-stability suite (float GPU against
 #                          the double-precision reference) and print its table
 #   ./vtkphong.sh study    regenerate the speed/accuracy trade study
@@ -317,6 +322,12 @@ case "$command" in
       "$root/Testing/Benchmarks/vtkPhongProgramMemory.py"
     PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
       "$root/Testing/Benchmarks/vtkPhongDirectionalCost.py"
+    ;;
+  bench-growth)
+    install_packages
+    build_project
+    with_display python3 "$root/Testing/Benchmarks/vtkPhongGrowth.py" \
+      --program "$build/bin/vtkPhongBigMeshFrame" --sizes "${2:-1e6,2e6,8e6,16e6,32e6}"
     ;;
   study)
     install_packages

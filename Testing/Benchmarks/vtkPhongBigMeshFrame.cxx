@@ -1,0 +1,229 @@
+// One big-mesh measurement, in a process of its own so that its peak memory is its own:
+//
+//   vtkPhongBigMeshFrame --mesh sphere|terrain --triangles N --normals yes|no
+//                        --mapper stock|phong [--size 800] [--frames 5]
+//
+// It makes the mesh, notes the resident memory (the data), draws a first frame (timed to
+// the GPU's completion), then FRAMES frames with the camera turned by a degree each (the
+// median is reported), and prints one line, `RESULT key=value ...`, with the peak resident
+// memory above the data. vtkPhongGrowth.py runs it over sizes and kinds and prints the table.
+// One headlight, specular 0.4, an 800 x 800 window, as in issue 29's measurements.
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPhongPolyDataMapper.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkTriangleFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Options
+{
+  std::string Mesh = "sphere";
+  double Triangles = 1e6;
+  bool Normals = true;
+  bool Phong = true;
+  int Size = 800;
+  int Frames = 5;
+};
+
+// A /proc/self/status field in MB (VmRSS: resident now, VmHWM: the peak so far).
+double StatusMB(const char* field)
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.compare(0, std::strlen(field), field) == 0)
+    {
+      return std::stod(line.substr(std::strlen(field) + 1)) / 1024.0;
+    }
+  }
+  return 0.0;
+}
+
+// A UV sphere of about N triangles: 2 * theta * (phi - 2) + 2 * theta, theta = 2 phi.
+vtkSmartPointer<vtkPolyData> Sphere(double triangles)
+{
+  const int phi = std::max(4, static_cast<int>(std::sqrt(triangles / 4.0)));
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(2 * phi);
+  sphere->SetPhiResolution(phi);
+  sphere->Update();
+  return sphere->GetOutput();
+}
+
+// A warped plane: an open surface, every triangle facing up, none culled.
+vtkSmartPointer<vtkPolyData> Terrain(double triangles, bool normals)
+{
+  const int resolution = std::max(2, static_cast<int>(std::sqrt(triangles / 2.0)));
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(resolution, resolution);
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputConnection(plane->GetOutputPort());
+  triangulate->Update();
+  vtkSmartPointer<vtkPolyData> terrain = triangulate->GetOutput();
+  vtkPoints* points = terrain->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    p[2] = 0.08 * std::sin(9.0 * p[0]) * std::cos(7.0 * p[1]) + 0.03 * std::sin(31.0 * p[1]);
+    points->SetPoint(i, p);
+  }
+  if (!normals)
+  {
+    return terrain;
+  }
+  vtkNew<vtkPolyDataNormals> withNormals;
+  withNormals->SetInputData(terrain);
+  withNormals->SplittingOff();
+  withNormals->ComputePointNormalsOn();
+  withNormals->Update();
+  return withNormals->GetOutput();
+}
+
+bool Parse(int argc, char* argv[], Options& options)
+{
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    const std::string key = argv[i], value = argv[i + 1];
+    if (key == "--mesh")
+      options.Mesh = value;
+    else if (key == "--triangles")
+      options.Triangles = std::stod(value);
+    else if (key == "--normals")
+      options.Normals = value == "yes";
+    else if (key == "--mapper")
+      options.Phong = value == "phong";
+    else if (key == "--size")
+      options.Size = std::stoi(value);
+    else if (key == "--frames")
+      options.Frames = std::stoi(value);
+    else
+      return false;
+  }
+  return (argc % 2) == 1 && (options.Mesh == "sphere" || options.Mesh == "terrain");
+}
+
+// The GL renderer's name (llvmpipe, a GPU), with spaces made underscores for the RESULT line.
+std::string RendererName(vtkRenderWindow* window)
+{
+  const std::string report = window->ReportCapabilities() ? window->ReportCapabilities() : "";
+  const std::string key = "OpenGL renderer string:";
+  const size_t at = report.find(key);
+  if (at == std::string::npos)
+  {
+    return "unknown";
+  }
+  std::string name = report.substr(at + key.size(), report.find('\n', at) - at - key.size());
+  name.erase(0, name.find_first_not_of(' '));
+  std::replace(name.begin(), name.end(), ' ', '_');
+  return name;
+}
+
+double Seconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!Parse(argc, argv, options))
+  {
+    std::fprintf(stderr,
+      "usage: vtkPhongBigMeshFrame --mesh sphere|terrain --triangles N --normals yes|no "
+      "--mapper stock|phong [--size 800] [--frames 5]\n");
+    return 2;
+  }
+  vtkSmartPointer<vtkPolyData> mesh = options.Mesh == "sphere"
+    ? Sphere(options.Triangles)
+    : Terrain(options.Triangles, options.Normals);
+  if (!options.Normals)
+  {
+    mesh->GetPointData()->SetNormals(nullptr);
+  }
+  vtkSmartPointer<vtkPolyDataMapper> mapper;
+  if (options.Phong)
+  {
+    mapper = vtkSmartPointer<vtkPhongPolyDataMapper>::New();
+  }
+  else
+  {
+    mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  }
+  mapper->SetInputData(mesh);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetSpecular(0.4);
+  actor->GetProperty()->SetSpecularPower(30.0);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> headlight;
+  headlight->SetLightTypeToHeadlight();
+  renderer->AddLight(headlight);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(options.Size, options.Size);
+  window->AddRenderer(renderer);
+  renderer->ResetCamera();
+  if (options.Mesh == "terrain")
+  {
+    renderer->GetActiveCamera()->Elevation(-50.0);
+    renderer->ResetCamera();
+  }
+  const double dataMB = StatusMB("VmRSS:");
+
+  auto start = std::chrono::steady_clock::now();
+  window->Render();
+  window->WaitForCompletion();
+  const double first = Seconds(start);
+  std::vector<double> frames;
+  for (int i = 0; i < options.Frames; ++i)
+  {
+    renderer->GetActiveCamera()->Azimuth(1.0);
+    start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    frames.push_back(Seconds(start));
+  }
+  std::sort(frames.begin(), frames.end());
+  const double steady = frames.empty() ? 0.0 : frames[frames.size() / 2];
+  int culled = -1;
+  if (auto* phong = vtkPhongPolyDataMapper::SafeDownCast(mapper))
+  {
+    culled = phong->GetUsedClosedSurfaceCulling() ? 1 : 0;
+  }
+  std::printf("RESULT mesh=%s triangles=%lld normals=%s mapper=%s first_s=%.3f steady_ms=%.1f "
+              "data_mb=%.0f peak_above_data_mb=%.0f culled=%d renderer=%s\n",
+    options.Mesh.c_str(), static_cast<long long>(mesh->GetNumberOfPolys()),
+    options.Normals ? "yes" : "no", options.Phong ? "phong" : "stock", first, 1e3 * steady,
+    dataMB, StatusMB("VmHWM:") - dataMB, culled, RendererName(window).c_str());
+  return 0;
+}
