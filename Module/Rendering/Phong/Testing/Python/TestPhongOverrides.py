@@ -6,9 +6,10 @@ objects made before it keep their class."""
 
 from vtkmodules.vtkCommonCore import vtkObjectFactory, vtkVersion
 from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkImagingSources import vtkImageCanvasSource2D
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkLightKit, vtkPolyDataMapper,
-                                         vtkRenderWindow, vtkRenderer,
+                                         vtkRenderWindow, vtkRenderer, vtkTexture,
                                          vtkWindowToImageFilter)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkphong_testing import Checks
@@ -93,6 +94,32 @@ def unmodified_script(lights=True):
     return mapper, picture_of(renderer, 120, 120)
 
 
+def textured_unlit():
+    """PyVista's Texture.plot() and lighting=False: a textured plane whose actor has lighting
+    off (drawn black through the switch on VTK 9.6 once). Returns the mapper and picture."""
+    image = vtkImageCanvasSource2D()
+    image.SetScalarTypeToUnsignedChar()
+    image.SetNumberOfScalarComponents(3)
+    image.SetExtent(0, 63, 0, 63, 0, 0)
+    image.SetDrawColor(200, 40, 40)
+    image.FillBox(0, 63, 0, 63)
+    image.SetDrawColor(40, 200, 40)
+    image.FillBox(0, 31, 0, 31)
+    texture = vtkTexture()
+    texture.SetInputConnection(image.GetOutputPort())
+    plane = vtkPlaneSource()
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(plane.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.SetTexture(texture)
+    actor.GetProperty().LightingOff()
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    vtkLightKit().AddLightsToRenderer(renderer)
+    return mapper, picture_of(renderer, 100, 100)
+
+
 before = vtkPolyDataMapper()
 checks.expect(before.GetClassName() == "vtkOpenGLPolyDataMapper",
               "without the switch VTK's own mapper: " + before.GetClassName())
@@ -132,7 +159,16 @@ checks.expect(composite.GetClassName() == COMPOSITE, "made by name, the class is
 mapper, unlit = unmodified_script(lights=False)
 checks.expect(mapper.GetClassName() == "vtkPhongPolyDataMapper", "no lights: vtkPhong's mapper")
 
+texture_mapper, textured = textured_unlit()
+checks.expect(texture_mapper.GetClassName() == "vtkPhongPolyDataMapper",
+              "textured, lighting off: vtkPhong's mapper")
+
 vtkphong.overrides.disable()
+_, stock_textured = textured_unlit()
+texture_difference = int(abs(textured - stock_textured).max())
+checks.expect(texture_difference <= 1 and int(textured.max()) >= 190,
+              "textured, lighting off: the texture's colours as stock VTK draws them (largest "
+              "difference %d, brightest %d)" % (texture_difference, int(textured.max())))
 stock_mapper, stock_unlit = unmodified_script(lights=False)
 checks.expect(stock_mapper.GetClassName() == "vtkOpenGLPolyDataMapper", "VTK's mapper to compare")
 _, stock_composite = composite_by_name()
