@@ -33,6 +33,20 @@
  */
 #define VTKPHONG_VTK_MAPPER_SHADER_REPLACEMENTS (VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 2, 0))
 
+/**
+ * VTK 9.7 and later (so VTKPHONG_VTK_9_3 too): factory overrides carry attributes
+ * (vtkOverrideAttribute, the sixth argument of vtkObjectFactory::RegisterOverride), matched
+ * against the user's preferences (vtkObjectFactory::SetPreferences, VTK_FACTORY_PREFER). The
+ * feature is tested, not the version: the header is new in 9.7.0 (no 9.6 release has it). No
+ * VTK that vtkPhong builds against here has it (docs/compatibility.md): the code under this
+ * test is written to VTK 9.7.0's headers and is not compiled in this project's builds.
+ */
+#if __has_include("vtkOverrideAttribute.h")
+#define VTKPHONG_HAS_OVERRIDE_ATTRIBUTES 1
+#else
+#define VTKPHONG_HAS_OVERRIDE_ATTRIBUTES 0
+#endif
+
 namespace vtkPhongCompatibility
 {
 /**

@@ -9,6 +9,12 @@
 #include "vtkSmartPointer.h"
 #include "vtkVersion.h"
 
+#if VTKPHONG_HAS_OVERRIDE_ATTRIBUTES
+#include "vtkOpenGLCompositePolyDataMapperDelegator.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOverrideAttribute.h"
+#endif
+
 vtkStandardNewMacro(vtkPhongObjectFactory);
 
 namespace
@@ -53,6 +59,33 @@ const Override Overrides[] = {
 #endif
 };
 
+#if VTKPHONG_HAS_OVERRIDE_ATTRIBUTES
+// VTK 9.7 chooses among the overrides of a class by their attributes when the user states
+// preferences (vtkObjectFactory::SetPreferences, VTK_FACTORY_PREFER, --vtk-factory-prefer):
+// the overrides whose attributes match the first preference are kept, in registration order,
+// and narrowed by the next ones; the first of them that makes an object wins. Registration
+// order (vtkPhong's factory first) decides only when none matches or none of those is
+// enabled. An override without attributes never matches: with
+// VTK_FACTORY_PREFER=RenderingBackend=OpenGL, VTK's OpenGL override of the same class wins
+// wherever it is enabled (VTK's OpenGL2 factory registered after vtkPhong's, as under
+// VTK_AUTOLOAD_PATH). So each override carries the attributes VTK gives the OpenGL class the
+// vtkPhong class derives from, made by VTK itself so that they follow whatever VTK declares
+// (9.7.0: RenderingBackend=OpenGL for vtkOpenGLPolyDataMapper, plus Platform=Desktop for
+// vtkOpenGLCompositePolyDataMapperDelegator). VTK's composite mapper has no override of its
+// own; vtkPhong's draws with OpenGL mappers and takes vtkOpenGLPolyDataMapper's. With equal
+// attributes, registration order decides again. Written to VTK 9.7.0's headers
+// (vtkOverrideAttribute.h, vtkObjectFactory.h, vtkOpenGLPolyDataMapper.h) and not compiled
+// here: Debian has no VTK 9.7. RegisterOverride takes the new chain returned.
+vtkOverrideAttribute* NewAttributes(const Override& entry)
+{
+  if (entry.Create == NewDelegator)
+  {
+    return vtkOpenGLCompositePolyDataMapperDelegator::CreateOverrideAttributes();
+  }
+  return vtkOpenGLPolyDataMapper::CreateOverrideAttributes();
+}
+#endif
+
 // The registered instance while the overrides are on.
 vtkSmartPointer<vtkPhongObjectFactory>& Registered()
 {
@@ -64,10 +97,15 @@ vtkSmartPointer<vtkPhongObjectFactory>& Registered()
 //------------------------------------------------------------------------------
 vtkPhongObjectFactory::vtkPhongObjectFactory()
 {
+  const char* description = "vtkPhong: exact Phong / Blinn-Phong lighting";
   for (const Override& entry : Overrides)
   {
-    this->RegisterOverride(entry.VTKClass, entry.PhongClass,
-      "vtkPhong: exact Phong / Blinn-Phong lighting", 1, entry.Create);
+#if VTKPHONG_HAS_OVERRIDE_ATTRIBUTES
+    this->RegisterOverride(
+      entry.VTKClass, entry.PhongClass, description, 1, entry.Create, NewAttributes(entry));
+#else
+    this->RegisterOverride(entry.VTKClass, entry.PhongClass, description, 1, entry.Create);
+#endif
   }
 }
 
