@@ -65,15 +65,21 @@ packages=(
   libassimp-dev assimp-testmodels assimp-utils
 )
 paraview_packages=(paraview paraview-dev openmpi-bin)
+# Clients whose own scenes the tests draw through the switch (Testing/Clients).
+client_packages=(python3-vedo)
 release="$(. /etc/os-release && echo "${VERSION_CODENAME:-}")"
 # ParaView on its own VTK (Debian 12 and 13): python3-paraview conflicts with python3-vtk9,
 # so its .deb is unpacked into the ParaView build tree. From Debian testing on, ParaView is
 # built on the system VTK and python3-paraview installs beside python3-vtk9.
 paraview_python_installed=0
 case "$release" in
-  trixie) paraview_version=5.13 ;;
+  trixie)
+    paraview_version=5.13
+    client_packages+=(python3-pyvista) # Debian 12 has no PyVista
+    ;;
   forky)
     paraview_version=6.1
+    client_packages+=(python3-pyvista)
     paraview_packages+=(python3-paraview)
     paraview_python_installed=1
     ;;
@@ -274,7 +280,7 @@ case "$command" in
       "$build/default-scene.png"
     ;;
   test)
-    install_packages "${paraview_packages[@]}"
+    install_packages "${paraview_packages[@]}" "${client_packages[@]}"
     build_project
     (cd "$build" && with_display ctest --output-on-failure -j "$jobs")
     build_paraview_plugin
