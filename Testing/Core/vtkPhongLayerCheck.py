@@ -36,6 +36,7 @@ RENDERING_RANKS = {
     # foundation: no vtkPhong include but each other
     "vtkPhongCompatibility": 0, "vtkPhongOpenGL": 0, "vtkPhongProblemLog": 0, "vtkPhongShaderFeatures": 0,
     "vtkPhongRadixSort": 0, "vtkPhongLightingSettings": 0, "vtkPhongProperty": 0,
+    "vtkPhongBackgroundTask": 0,
     # the plan, shared maths, small helpers
     "vtkPhongShaderPlan": 1, "vtkPhongMaterial": 1, "vtkPhongLightGeometry": 1,
     "vtkPhongShaderCode": 1, "vtkPhongBufferBlocks": 1, "vtkPhongScopedCulling": 1,

@@ -59,3 +59,13 @@ vtkSmartPointer<vtkPolyData> vtkPhongBufferBlocks::Points(
   merged->SetPoints(points);
   return merged;
 }
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkPhongBufferBlocks::CopyOfPoints(vtkPolyData* input)
+{
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(input->GetPoints());
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->SetPoints(points);
+  return copy;
+}

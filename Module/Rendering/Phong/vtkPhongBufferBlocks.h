@@ -37,6 +37,12 @@ public:
    * of their own. Vertices no block claims are NaN.
    */
   static vtkSmartPointer<vtkPolyData> Points(const std::vector<vtkPhongBufferBlock>& blocks);
+
+  /**
+   * A polydata holding a deep copy of `input`'s points and nothing else: what an analysis on
+   * another thread reads while the input may change (vtkPhongBackgroundTask).
+   */
+  static vtkSmartPointer<vtkPolyData> CopyOfPoints(vtkPolyData* input);
 };
 
 #endif

@@ -16,7 +16,9 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkPhongBackgroundTask.h"
 #include "vtkPhongBufferBlocks.h"
+#include "vtkPhongOpenGL.h"
 #include "vtkPhongRadixSort.h"
 #include "vtkPhongShaderCode.h"
 #include "vtkPhongVisibleClusters.h"
@@ -27,7 +29,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
 #include "vtkTexture.h"
-#include "vtkPhongOpenGL.h"
 
 #include <algorithm>
 #include <array>
@@ -56,13 +57,32 @@ constexpr std::uint64_t LargestPackedId = (std::uint64_t(1) << 31) - 1;
 }
 
 //------------------------------------------------------------------------------
+// The analysis on its own thread, and its answer.
+struct vtkPhongClosedSurface::Background
+{
+  int Orientation = 0;
+  std::unique_ptr<vtkPhongBackgroundTask> Task;
+};
+
+//------------------------------------------------------------------------------
+vtkPhongClosedSurface::vtkPhongClosedSurface() = default;
+
+//------------------------------------------------------------------------------
+vtkPhongClosedSurface::~vtkPhongClosedSurface()
+{
+  this->CollectBackground(true);
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongClosedSurface::Update(vtkOpenGLIndexBufferObject* triangles,
   const std::vector<vtkPhongBufferBlock>& blocks, vtkMTimeType builtAt)
 {
   if (builtAt == this->BuiltAt && triangles->IndexCount == this->IndexCount)
   {
+    this->CollectBackground(false);
     return;
   }
+  this->CollectBackground(true); // at most one analysis at a time
   this->BuiltAt = builtAt;
   this->IndexCount = triangles->IndexCount;
   this->Orientation = 0;
@@ -75,19 +95,58 @@ void vtkPhongClosedSurface::Update(vtkOpenGLIndexBufferObject* triangles,
   }
   vtkSmartPointer<vtkPolyData> points = vtkPhongBufferBlocks::Points(blocks);
   std::vector<unsigned int> indices;
-  if (points && vtkPhongVisibleClusters::ReadIndices(triangles, indices))
+  if (!points || !vtkPhongVisibleClusters::ReadIndices(triangles, indices))
   {
-    this->Analyse(indices, points);
+    return;
   }
+  if (indices.size() / 3 >= vtkPhongBackgroundTask::LargeTriangles)
+  {
+    this->AnalyseInBackground(std::move(indices), points);
+    return;
+  }
+  this->Orientation = Analyse(indices, points);
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongClosedSurface::Analyse(std::vector<unsigned int>& indices, vtkPolyData* input)
+bool vtkPhongClosedSurface::IsAnalysing() const
+{
+  return this->Pending != nullptr;
+}
+
+//------------------------------------------------------------------------------
+// The thread works on its own copies: the input's points may change, or go, meanwhile.
+void vtkPhongClosedSurface::AnalyseInBackground(
+  std::vector<unsigned int> indices, vtkPolyData* input)
+{
+  vtkSmartPointer<vtkPolyData> copy = vtkPhongBufferBlocks::CopyOfPoints(input);
+  this->Pending = std::make_unique<Background>();
+  Background* pending = this->Pending.get();
+  pending->Task =
+    std::make_unique<vtkPhongBackgroundTask>([pending, copy, indices = std::move(indices)]() mutable
+      { pending->Orientation = Analyse(indices, copy); });
+}
+
+//------------------------------------------------------------------------------
+// Takes the background analysis's answer when it is in (or, with `wait`, once it is).
+void vtkPhongClosedSurface::CollectBackground(bool wait)
+{
+  if (!this->Pending || (!wait && !this->Pending->Task->IsDone()))
+  {
+    return;
+  }
+  this->Pending->Task->Wait();
+  this->Orientation = this->Pending->Orientation;
+  this->Pending.reset();
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongClosedSurface::Analyse(std::vector<unsigned int>& indices, vtkPolyData* input)
 {
   if (WeldTriangles(indices, WeldPoints(input)) && IsClosedAndConsistent(indices))
   {
-    this->Orientation = Orient(indices, input);
+    return Orient(indices, input);
   }
+  return 0;
 }
 
 //------------------------------------------------------------------------------

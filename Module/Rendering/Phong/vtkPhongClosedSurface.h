@@ -24,6 +24,11 @@
  *   cavities too many to check (more than 16M ray-triangle tests). Flat closed surfaces
  *   (both sides of a sheet, volume about 0) bound nothing and count for neither.
  *
+ * A surface of more than 256k triangles is analysed on a thread of its own, on copies of the
+ * indices and points, so that its first frames draw as stock VTK's do (nothing culled)
+ * while the analysis runs (about 0.3 s a million triangles); the frame after it ends culls.
+ * A new upload first waits for the analysis of the previous one, so that at most one runs.
+ *
  * Per view, HiddenFaces() answers whether the camera sees all of it from outside: every
  * corner of the drawn bounds lies beyond the near plane in the projection VTK draws with
  * (so the camera is outside, and no near-plane cut opens the solid). The face to cull
@@ -46,6 +51,7 @@
 
 #include <cstddef> // for size_t
 #include <cstdint> // for std::uint64_t
+#include <memory>  // for std::unique_ptr
 #include <vector>  // for std::vector
 
 class vtkActor;
@@ -58,6 +64,11 @@ class vtkShaderProperty;
 class vtkPhongClosedSurface
 {
 public:
+  vtkPhongClosedSurface();
+  ~vtkPhongClosedSurface(); // waits for a background analysis
+  vtkPhongClosedSurface(const vtkPhongClosedSurface&) = delete;
+  vtkPhongClosedSurface& operator=(const vtkPhongClosedSurface&) = delete;
+
   /**
    * Analyse the triangles VTK's index buffer `triangles` draws (indices into the vertex
    * buffer that holds the points of `blocks`) when the buffer was rebuilt since (`builtAt`,
@@ -71,6 +82,11 @@ public:
    * 0: not closed surfaces (or not analysed), nothing may be culled.
    */
   int GetOrientation() const { return this->Orientation; }
+
+  /**
+   * Whether the analysis of the last upload still runs in the background.
+   */
+  bool IsAnalysing() const;
 
   /**
    * The faces to cull (GL_BACK or GL_FRONT) when the renderer's camera sees the surfaces,
@@ -92,7 +108,9 @@ public:
     vtkShaderProperty* legacyShaders, int clippingPlanes);
 
 private:
-  void Analyse(std::vector<unsigned int>& indices, vtkPolyData* input);
+  static int Analyse(std::vector<unsigned int>& indices, vtkPolyData* input);
+  void AnalyseInBackground(std::vector<unsigned int> indices, vtkPolyData* input);
+  void CollectBackground(bool wait);
   static bool HasConcavePolygons(vtkPolyData* input);
   static std::vector<vtkIdType> WeldPoints(vtkPolyData* input);
   static bool WeldTriangles(
@@ -115,6 +133,8 @@ private:
   int Orientation = 0;
   vtkMTimeType BuiltAt = 0;
   size_t IndexCount = 0;
+  struct Background; // the analysis of a large surface on its own thread
+  std::unique_ptr<Background> Pending;
 };
 
 #endif

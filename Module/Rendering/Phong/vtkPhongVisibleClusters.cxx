@@ -7,11 +7,14 @@
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPhongBackgroundTask.h"
+#include "vtkPhongBufferBlocks.h"
 #include "vtkPhongDepthPrePass.h"
+#include "vtkPhongOpenGL.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
-#include "vtkPhongOpenGL.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,6 +48,18 @@ double NearestDepth(const vtkBoundingBox& box, const double row[4])
 }
 
 //------------------------------------------------------------------------------
+// Large meshes' clusters, arranged on a thread of their own from copies of the indices and
+// points (vtkPhongBackgroundTask); uploaded by the first Update after they are in.
+struct vtkPhongVisibleClusters::Background
+{
+  vtkPhongVisibleClusters Arranged;
+  std::unique_ptr<vtkPhongBackgroundTask> Task;
+};
+
+//------------------------------------------------------------------------------
+vtkPhongVisibleClusters::vtkPhongVisibleClusters() = default;
+
+//------------------------------------------------------------------------------
 vtkPhongVisibleClusters::~vtkPhongVisibleClusters() = default; // GL objects die with the context
 
 //------------------------------------------------------------------------------
@@ -66,8 +81,10 @@ bool vtkPhongVisibleClusters::Update(vtkWindow* window, vtkOpenGLIndexBufferObje
   }
   if (this->IsCurrent(window, triangles, builtAt))
   {
+    this->CollectBackground();
     return !this->Clusters.empty();
   }
+  this->Pending.reset(); // waits for an arrangement of an older upload: one at a time
   this->BuiltAt = builtAt;
   this->IndexCount = triangles->IndexCount;
   this->Clusters.clear();
@@ -85,8 +102,45 @@ bool vtkPhongVisibleClusters::Update(vtkWindow* window, vtkOpenGLIndexBufferObje
   {
     return false; // the buffer's vertices are not the input's points
   }
-  this->Build(indices, input);
+  if (indices.size() / 3 >= vtkPhongBackgroundTask::LargeTriangles)
+  {
+    this->ArrangeInBackground(std::move(indices), input);
+    return false; // the depth pass draws every triangle until the clusters are in
+  }
+  this->Arrange(indices, input);
+  this->Install();
   return !this->Clusters.empty();
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongVisibleClusters::ArrangeInBackground(
+  std::vector<unsigned int> indices, vtkPolyData* input)
+{
+  vtkSmartPointer<vtkPolyData> copy = vtkPhongBufferBlocks::CopyOfPoints(input);
+  this->Pending = std::make_unique<Background>();
+  Background* pending = this->Pending.get();
+  pending->Task = std::make_unique<vtkPhongBackgroundTask>(
+    [pending, copy, indices = std::move(indices)]() { pending->Arranged.Arrange(indices, copy); });
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongVisibleClusters::CollectBackground()
+{
+  if (!this->Pending || !this->Pending->Task->IsDone())
+  {
+    return;
+  }
+  this->Pending->Task->Wait();
+  vtkPhongVisibleClusters& arranged = this->Pending->Arranged;
+  this->Clusters = std::move(arranged.Clusters);
+  this->GroupBoxes = std::move(arranged.GroupBoxes);
+  this->Sorted = std::move(arranged.Sorted);
+  this->Triangles = arranged.Triangles;
+  this->Pending.reset();
+  if (!this->Clusters.empty())
+  {
+    this->Install();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -110,7 +164,7 @@ bool vtkPhongVisibleClusters::ReadIndices(
 // contours are separate components, and a cluster holding parts of two shows as long as the
 // outer part does). Within a component, or a run of small ones, the triangles are split at
 // the median of their centroids along the longest axis until each part is one cluster.
-void vtkPhongVisibleClusters::Build(const std::vector<unsigned int>& indices, vtkPolyData* input)
+void vtkPhongVisibleClusters::Arrange(const std::vector<unsigned int>& indices, vtkPolyData* input)
 {
   const size_t triangles = indices.size() / 3;
   const std::vector<std::uint32_t> components = ConnectedComponents(indices, input);
@@ -140,9 +194,17 @@ void vtkPhongVisibleClusters::Build(const std::vector<unsigned int>& indices, vt
     std::copy_n(&indices[3 * order[t]], 3, &sorted[3 * t]);
   }
   this->ComputeBounds(sorted, input);
-  this->SortedTriangles->Upload(sorted, vtkOpenGLBufferObject::ElementArrayBuffer);
-  this->SortedTriangles->IndexCount = sorted.size();
+  this->Sorted = std::move(sorted);
   this->Triangles = static_cast<double>(triangles);
+}
+
+//------------------------------------------------------------------------------
+// The arranged triangles to the GPU, and a query per cluster.
+void vtkPhongVisibleClusters::Install()
+{
+  this->SortedTriangles->Upload(this->Sorted, vtkOpenGLBufferObject::ElementArrayBuffer);
+  this->SortedTriangles->IndexCount = this->Sorted.size();
+  this->Sorted = std::vector<unsigned int>();
   this->CountAll = true;
   if (this->Queries.size() < this->Clusters.size())
   {
@@ -456,7 +518,9 @@ void vtkPhongVisibleClusters::ReleaseGraphicsResources(vtkWindow* window)
 //------------------------------------------------------------------------------
 void vtkPhongVisibleClusters::Reset()
 {
+  this->Pending.reset();
   this->Clusters.clear();
+  this->Sorted.clear();
   this->GroupBoxes.clear();
   this->Queries.clear();
   this->Counting = false;

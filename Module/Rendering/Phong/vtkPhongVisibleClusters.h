@@ -35,6 +35,7 @@
 #include "vtkType.h"        // for vtkMTimeType
 
 #include <cstdint> // for std::uint32_t
+#include <memory>  // for std::unique_ptr
 #include <vector>  // for std::vector
 
 class vtkActor;
@@ -48,7 +49,7 @@ class vtkWindow;
 class vtkPhongVisibleClusters
 {
 public:
-  vtkPhongVisibleClusters() = default;
+  vtkPhongVisibleClusters();
   ~vtkPhongVisibleClusters();
   vtkPhongVisibleClusters(const vtkPhongVisibleClusters&) = delete;
   vtkPhongVisibleClusters& operator=(const vtkPhongVisibleClusters&) = delete;
@@ -139,7 +140,10 @@ private:
     bool Counted = false; // drawn with a query not read yet
   };
 
-  void Build(const std::vector<unsigned int>& indices, vtkPolyData* input);
+  void Arrange(const std::vector<unsigned int>& indices, vtkPolyData* input); // no GL
+  void Install();                                                             // GL
+  void ArrangeInBackground(std::vector<unsigned int> indices, vtkPolyData* input);
+  void CollectBackground();
   void Split(std::vector<std::uint32_t>& order, const std::vector<double>& centroids, size_t first,
     size_t last, size_t target);
   static std::vector<double> Centroids(
@@ -151,6 +155,9 @@ private:
   void Reset();
 
   std::vector<Cluster> Clusters;
+  std::vector<unsigned int> Sorted; // the triangles in cluster order, until uploaded
+  struct Background;                // clusters arranged on a thread of their own
+  std::unique_ptr<Background> Pending;
   // Each group's box: a group's clusters are drawn together, nearest group first.
   std::vector<vtkBoundingBox> GroupBoxes;
   vtkNew<vtkOpenGLIndexBufferObject> SortedTriangles;

@@ -27,9 +27,11 @@
 
 #include "vtkPhongDepthPrePass.h"
 
+#include <chrono>
 #include <cmath>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace
@@ -231,6 +233,39 @@ void CheckCGALMesh(const char* path, vtkPhongTest::Checks& checks)
   std::cout << "bunny: " << mapper->GetDepthComplexity() << " shaded fragments per visible one\n";
   checks.Expect(!used[0] && used[1] && mapper->GetDepthComplexity() > 1.0,
     "CGAL's bunny, automatic: probed in the second frame, some of it hidden");
+}
+
+// A mesh of more than 256k triangles has its clusters arranged on a thread of their own: the
+// depth pass draws every triangle until they are in, then leaves out those its front hides,
+// and the picture stays the one drawn without the pre-pass.
+void CheckLargeMesh(vtkPhongTest::Checks& checks)
+{
+  vtkPhongTest::Scene view(240, 240);
+  vtkActor* actor = vtkPhongTest::AddActor(view, vtkPhongTest::MakeSphere(400)); // 318 400
+  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
+  mapper->SetClosedSurfaceCulling(false); // the depth pass then has back clusters to leave out
+  view.Renderer->ResetCamera();
+  mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
+  view.Window->Render();
+  const auto off = vtkPhongTest::Snapshot(view.Window);
+  mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOn);
+  const double triangles = 318400.0;
+  bool culled = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!culled && std::chrono::steady_clock::now() < deadline)
+  {
+    view.Window->Render();
+    culled = mapper->GetDepthPassTriangles() < 0.9 * triangles;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  const int differing =
+    vtkPhongTest::CountDifferentPixels(off, vtkPhongTest::Snapshot(view.Window), 0);
+  checks.Expect(culled && differing == 0,
+    "large mesh: clusters arranged in the background, then used (" +
+      std::to_string(mapper->GetDepthPassTriangles()) +
+      " of 318400 triangles in the depth "
+      "pass), the picture unchanged (" +
+      std::to_string(differing) + " pixels differ)");
 }
 
 // Two spheres of cells on the view axis in one polydata, the far one hidden behind the near
@@ -490,6 +525,7 @@ int TestPhongDepthPrePass(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   CheckCGALMesh(argv[1], checks);
+  CheckLargeMesh(checks);
   PrePassScene scene;
 
   const auto off = scene.Render8Bit(Mapper::DepthPrePassOff);
