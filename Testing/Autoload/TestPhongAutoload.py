@@ -12,9 +12,7 @@ import subprocess
 import sys
 
 from vtkmodules.vtkCommonCore import vtkVersion
-from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkphong_testing import Checks
+from vtkphong_testing import Checks, read_png
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--program", required=True)
@@ -49,14 +47,6 @@ def made_classes(output):
     return made
 
 
-def picture(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).astype(int)
-
-
 def run_program(autoload):
     out = os.path.join(args.temporary, "TestPhongAutoload_%s.png"
                        % ("autoload" if autoload else "stock"))
@@ -76,11 +66,11 @@ for name in ("vtkPolyDataMapper", COMPOSITE_DRAWER):
                   "with VTK_AUTOLOAD_PATH, the factory makes %s for %s (%s)"
                   % (PHONG_CLASS[name], name, phong.get(name)))
 if os.path.exists(stock_png) and os.path.exists(phong_png):
-    a, b = picture(stock_png), picture(phong_png)
+    a, b = read_png(stock_png), read_png(phong_png)
     checks.expect(a.max() > 0 and b.max() > 0, "both pictures are drawn")
     # The same scene lit by VTK and by vtkPhong: identical in the diffuse, apart where the
     # exact model differs (VTK's specular on the composite's back-facing normals, ...).
-    differing = int((abs(a - b).max(axis=1) > 6).sum())
+    differing = int((abs(a - b).max(axis=2) > 6).sum())
     print("stock and autoloaded pictures: %d pixels differ by more than 6 levels" % differing)
 
 # VTK's own Python, vtkphong not imported.

@@ -19,11 +19,11 @@ import subprocess
 import sys
 
 import numpy
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkVersion
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-from vtkphong_testing import Checks
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkphong_testing import Checks, read_png
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LEVELS = 8
@@ -69,17 +69,6 @@ def version_of(client):
     except Exception as error:  # not installed, or broken: the scenes are skipped
         print("%s: not importable (%s); its scenes are skipped" % (client, error))
         return None
-
-
-def read_png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    width, height, _ = image.GetDimensions()
-    channels = image.GetNumberOfScalarComponents()
-    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(height, width, channels)
-    return pixels[:, :, :3].astype(int)
 
 
 def save_pair(stock, phong, path):

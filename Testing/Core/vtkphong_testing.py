@@ -81,14 +81,7 @@ def compare_with_baseline(window, name, args):
         return False
 
     pixels, image = snapshot(window)
-    reader = vtkPNGReader()
-    reader.SetFileName(baseline)
-    reader.Update()
-    expected_image = reader.GetOutput()
-    width, height, _ = expected_image.GetDimensions()
-    channels = expected_image.GetNumberOfScalarComponents()
-    expected = vtk_to_numpy(expected_image.GetPointData().GetScalars())
-    expected = expected.reshape(height, width, channels)[:, :, :3].astype(int)
+    expected = read_png(baseline)
     if expected.shape != pixels.shape:
         print("%s: size %s differs from the baseline's %s" % (name, pixels.shape, expected.shape),
               file=sys.stderr)
@@ -103,6 +96,19 @@ def compare_with_baseline(window, name, args):
               file=sys.stderr)
         return False
     return True
+
+
+def read_png(path):
+    """A PNG's RGB pixels as an int array (rows, columns, 3), the first row at the bottom as
+    VTK stores them."""
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    channels = image.GetNumberOfScalarComponents()
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(height, width, channels)
+    return pixels[:, :, :3].astype(int)
 
 
 class Checks:
