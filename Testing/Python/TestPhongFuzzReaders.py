@@ -264,6 +264,71 @@ def report(results):
     print("| all | %d | %s |" % (sum(total.values()), " | ".join(str(total[n]) for n in names)))
 
 
+def header_count_shapes(seed_vtk, directory):
+    """Legacy VTK files whose section counts the file's size cannot hold (issue 28: a
+    `VERTICES 4294967295` of a few hundred bytes made VTK's reader ask for 32 GB), made from
+    the ASCII seed, and the same counts in a binary file: (name, path)."""
+    with open(seed_vtk, "rb") as stream:
+        ascii_seed = stream.read()
+    shapes = {
+        "VERTICES 4294967295": b"# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\n"
+                               b"POINTS 3 float\n0 0 0 1 0 0 0 1 0\nVERTICES 4294967295 3\n1 0\n",
+        "POLYGONS 1e9 cells": _with_line(ascii_seed, b"POLYGONS", b"POLYGONS 1000000000 4000000000"),
+        "POINTS 2^31": _with_line(ascii_seed, b"POINTS", b"POINTS 2147483647 float"),
+        "NORMALS beyond POINT_DATA": _with_line(ascii_seed, b"POINT_DATA", b"POINT_DATA 900000000"),
+    }
+    from vtkmodules.vtkFiltersSources import vtkSphereSource
+    from vtkmodules.vtkIOLegacy import vtkPolyDataWriter
+    binary = os.path.join(directory, "binary-seed.vtk")
+    writer = vtkPolyDataWriter()
+    sphere = vtkSphereSource()
+    writer.SetInputConnection(sphere.GetOutputPort())
+    writer.SetFileName(binary)
+    writer.SetFileTypeToBinary()
+    writer.Write()
+    with open(binary, "rb") as stream:
+        binary_seed = stream.read()
+    shapes["binary: POINTS beyond the payload"] = _with_line(binary_seed, b"POINTS",
+                                                             b"POINTS 50000000 float")
+    shapes["binary: CONNECTIVITY beyond the payload"] = _with_line(
+        binary_seed, b"POLYGONS", b"POLYGONS 97 600000000")
+    paths = []
+    for number, (name, data) in enumerate(sorted(shapes.items())):
+        path = os.path.join(directory, "shape-%d.vtk" % number)
+        with open(path, "wb") as stream:
+            stream.write(data)
+        paths.append((name, path))
+    return paths
+
+
+def _with_line(data, keyword, replacement):
+    """data with the first line starting with keyword replaced."""
+    start = data.find(b"\n" + keyword) + 1
+    end = data.find(b"\n", start)
+    return data[:start] + replacement + data[end:]
+
+
+def check_header_counts(work):
+    """Every shape is refused by the header check, before VTK's reader allocates (under the
+    fuzz's address-space limit VTK's own failed allocation would be refused too), and the
+    reading stage refuses it (not read, crashed or hung)."""
+    from vtkphong import _readers
+    failures = []
+    seed = os.path.join(work, "seed.vtk")
+    for name, path in header_count_shapes(seed, work):
+        try:
+            _readers.check_vtk_legacy_counts(path)
+            reason = None
+        except _readers.ReadFailure as failure:
+            reason = str(failure)
+        outcome = fuzz_one(path, work)[0]
+        print("header count shape %r: %s (%s)" % (name, outcome, reason))
+        if outcome != "refused" or not reason:
+            failures.append("header count shape %r: the reader stage gave %s, the header check"
+                            " %s" % (name, outcome, reason or "let it through"))
+    return failures
+
+
 def check_through_command(cli, results, work, sample):
     """The whole command on mutants whose reader crashed or hung: one line, status 1."""
     contained = [path for _, _, path, outcome in results if "contained" in outcome][:sample]
@@ -311,6 +376,7 @@ def main():
     failures = ["%s (%s): %s" % (os.path.basename(path), mutation, outcome)
                 for _, mutation, path, outcome in results if outcome.startswith("COMMAND")]
     failures += check_through_command(args.cli, results, work, args.cli_sample)
+    failures += check_header_counts(work)
     memory = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss >> 10
     print("%d mutants in %.0f s; this process peaked at %d MB"
           % (len(mutants), time.monotonic() - started, memory))

@@ -30,6 +30,8 @@ class ReadFailure(Exception):
 def read_parts(path):
     """[(polydata, material dict or None, texture path or None)] of the file."""
     extension = os.path.splitext(path)[1].lower()
+    if extension == ".vtk":
+        check_vtk_legacy_counts(path)
     if extension in VTK_EXTENSIONS:
         return [(_read_vtk(path, extension), None, None)]
     if extension == ".ply":
@@ -79,6 +81,104 @@ def _ply_smallest_size(header, binary):
             scalar = words[2] if words[1] == "list" else words[1]
             total += count * PLY_SIZES.get(scalar, 1)
     return total
+
+
+# Bytes of each legacy VTK scalar type in a BINARY file.
+VTK_LEGACY_SIZES = {"bit": 1, "char": 1, "unsigned_char": 1, "short": 2, "unsigned_short": 2,
+                    "int": 4, "unsigned_int": 4, "long": 8, "unsigned_long": 8, "float": 4,
+                    "double": 8, "vtkidtype": 8, "vtktypeint64": 8, "vtktypeuint64": 8,
+                    "vtktypeint32": 4, "vtktypeuint32": 4}
+
+
+def check_vtk_legacy_counts(path):
+    """Refuse a legacy VTK file whose sections announce more values than its size can hold
+    (VTK's reader allocates what a count says first: `VERTICES 4294967295 ...` in a file of
+    a few hundred bytes asked for 32 GB). ASCII values take at least two bytes (a digit and a
+    separator), binary ones their type's size; the sections are walked in order, binary
+    payloads skipped by the size their header states."""
+    walk = _LegacyWalk(os.path.getsize(path))
+    with open(path, "rb") as stream:
+        head = [stream.readline() for _ in range(3)]
+        walk.binary = head[2].strip().upper() == b"BINARY"
+        walk.version5 = b"Version 5" in head[0]
+        line = stream.readline()
+        while line:
+            skip = walk.section(line.decode("ascii", "replace").split())
+            if skip:
+                stream.seek(skip, os.SEEK_CUR)
+            line = stream.readline()
+
+
+class _LegacyWalk:
+    """The legacy VTK sections seen so far, and the bytes their values need at least."""
+
+    CELL_SECTIONS = ("VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS", "CELLS")
+
+    def __init__(self, size):
+        self.size, self.needed = size, 0
+        self.binary = self.version5 = False
+        self.count = 0              # the current POINT_DATA / CELL_DATA count
+        self.cells = (0, 0)         # Version 5: the offsets' and connectivity's lengths
+        self.scalars = None         # SCALARS' values and type, due after LOOKUP_TABLE
+
+    def section(self, words):
+        """The binary payload's bytes after the header line `words` (0 in ASCII)."""
+        if not words:
+            return 0
+        keyword, numbers = words[0].upper(), [w for w in words[1:] if w.isdigit()]
+        if keyword in ("POINT_DATA", "CELL_DATA") and numbers:
+            self.count = int(numbers[0])
+            return 0
+        if keyword == "SCALARS" and len(words) >= 3:
+            components = int(words[3]) if len(words) >= 4 and words[3].isdigit() else 1
+            self.scalars = (self.count * components, words[2])
+            return 0
+        if keyword == "LOOKUP_TABLE" and len(words) == 2 and self.scalars:
+            values, self.scalars = self.scalars, None
+            return self.values(values[0], values[1], "SCALARS")
+        if keyword in self.CELL_SECTIONS and len(numbers) >= 2:
+            if self.version5:
+                self.cells = (int(numbers[0]), int(numbers[1]))
+                return 0
+            # Each of the n cells takes its size and at least one point id: 2n values at least.
+            return self.values(max(int(numbers[1]), 2 * int(numbers[0])), "int", keyword)
+        if keyword in ("OFFSETS", "CONNECTIVITY") and len(words) >= 2:
+            length = self.cells[0] if keyword == "OFFSETS" else self.cells[1]
+            return self.values(length, words[1], keyword)
+        announced = self.announced(keyword, words, numbers)
+        return self.values(announced[0], announced[1], keyword) if announced else 0
+
+    def announced(self, keyword, words, numbers):
+        """(values, type) of the other sections, or None."""
+        if keyword == "POINTS" and len(words) >= 3 and numbers:
+            return 3 * int(numbers[0]), words[2]
+        if keyword == "CELL_TYPES" and numbers:
+            return int(numbers[0]), "int"
+        if keyword in ("VECTORS", "NORMALS") and len(words) >= 3:
+            return 3 * self.count, words[2]
+        if keyword == "TENSORS" and len(words) >= 3:
+            return 9 * self.count, words[2]
+        if keyword == "TEXTURE_COORDINATES" and len(words) >= 4 and words[2].isdigit():
+            return int(words[2]) * self.count, words[3]
+        if keyword == "COLOR_SCALARS" and numbers:
+            return int(numbers[-1]) * self.count, "unsigned_char"
+        if keyword == "LOOKUP_TABLE" and len(words) == 3 and words[2].isdigit():
+            return 4 * int(words[2]), "unsigned_char"
+        if keyword in ("X_COORDINATES", "Y_COORDINATES", "Z_COORDINATES") and \
+                len(words) >= 3 and numbers:
+            return int(numbers[0]), words[2]
+        if len(words) == 4 and words[1].isdigit() and words[2].isdigit() and \
+                words[3].lower() in VTK_LEGACY_SIZES:
+            return int(words[1]) * int(words[2]), words[3]  # an array of a FIELD
+        return None
+
+    def values(self, count, scalar, keyword):
+        width = VTK_LEGACY_SIZES.get(scalar.lower(), 1) if self.binary else 2
+        self.needed += count * width
+        if self.needed > self.size:
+            raise ReadFailure("its %s section announces %d values, more than the file's %d "
+                              "bytes can hold" % (keyword, count, self.size))
+        return count * width if self.binary else 0
 
 
 def _read_vtk(path, extension):
