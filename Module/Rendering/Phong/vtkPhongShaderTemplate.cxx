@@ -291,6 +291,10 @@ void vtkPhongShaderTemplate::Substitute(
   {
     plan.Features.Set(Feature::InterpolatedDots, false);
   }
+  if (plan.Has(Feature::OneSided) && FlipsNormalByDepth(shaders[vtkShader::Fragment]->GetSource()))
+  {
+    plan.Features.Set(Feature::OneSided, false);
+  }
   DeclareInvariantPosition(shaders);
   const bool perVertex = plan.Has(Feature::SumsPerVertex);
   const std::string sums = this->Resolve(vtkPhongLightingLib, "Sums", plan);
@@ -305,6 +309,14 @@ void vtkPhongShaderTemplate::Substitute(
   {
     this->SubstituteVertexDots(shaders[vtkShader::Vertex], plan);
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongShaderTemplate::FlipsNormalByDepth(const std::string& fragmentSource)
+{
+  return fragmentSource.find(
+           "if (normalVCVSOutput.z < 0) { normalVCVSOutput = -normalVCVSOutput; }") !=
+    std::string::npos;
 }
 
 //------------------------------------------------------------------------------

@@ -54,6 +54,14 @@ public:
    */
   void Substitute(std::map<vtkShader::Type, vtkShader*>& shaders, const Plan& plan) const;
 
+  /**
+   * Whether VTK's fragment code turns the normal towards the viewer by its depth (VTK 9.7's
+   * lines: `if (normalVCVSOutput.z < 0) ...`) rather than by the side drawn: then one-sided
+   * lighting keeps the normal VTK gives, since un-flipping by gl_FrontFacing would turn a
+   * wide line's quads away at random.
+   */
+  static bool FlipsNormalByDepth(const std::string& fragmentSource);
+
 private:
   // The state of Resolve() while it reads a template line by line.
   struct Reading

@@ -380,5 +380,14 @@ int TestPhongShaderSpecialization(int, char*[])
     "//PHONG_SECTION Probe\n//PHONG_IF SPECULR\nx\n//PHONG_ENDIF\n", "Probe", vtkPhongShaderPlan());
   checks.Expect(errors.Messages.size() == 1 && Has(errors.Messages[0], "SPECULR"),
     "a misspelt feature in a template is reported");
+
+  // One-sided lighting un-flips the normal by the side drawn only where VTK flipped it so:
+  // VTK 9.7 turns lines' normals towards the viewer by their depth (its exact line, below).
+  checks.Expect(!vtkPhongShaderTemplate::FlipsNormalByDepth(
+                  "  if (gl_FrontFacing == false) { normalVCVSOutput = -normalVCVSOutput; }\n"),
+    "VTK's surfaces flip by the side drawn");
+  checks.Expect(vtkPhongShaderTemplate::FlipsNormalByDepth(
+                  "  if (normalVCVSOutput.z < 0) { normalVCVSOutput = -normalVCVSOutput; }\n"),
+    "VTK 9.7's lines flip by depth: no un-flip by the side drawn");
   return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
 }
