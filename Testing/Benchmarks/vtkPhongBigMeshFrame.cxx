@@ -142,7 +142,8 @@ bool Parse(int argc, char* argv[], Options& options)
 // The GL renderer's name (llvmpipe, a GPU), with spaces made underscores for the RESULT line.
 std::string RendererName(vtkRenderWindow* window)
 {
-  const std::string report = window->ReportCapabilities() ? window->ReportCapabilities() : "";
+  const char* capabilities = window->ReportCapabilities(); // queries the context each call
+  const std::string report = capabilities ? capabilities : "";
   const std::string key = "OpenGL renderer string:";
   const size_t at = report.find(key);
   if (at == std::string::npos)
