@@ -7,9 +7,9 @@
 // It makes the mesh, notes the resident memory (the data), draws a first frame (timed to
 // the GPU's completion), then, after SETTLE seconds of untimed frames (vtkPhong's background
 // analyses of a large mesh end meanwhile), FRAMES frames with the camera turned by a degree
-// each (the median is reported), and prints one line, `RESULT key=value ...`, with the peak resident
-// memory above the data. vtkPhongGrowth.py runs it over sizes and kinds and prints the table.
-// One headlight, specular 0.4, an 800 x 800 window, as in issue 29's measurements.
+// each (the median is reported), and prints one line, `RESULT key=value ...`, with the peak
+// resident memory above the data. vtkPhongGrowth.py runs it over sizes and kinds and prints the
+// table. One headlight, specular 0.4, an 800 x 800 window, as in issue 29's measurements.
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -255,11 +255,11 @@ int main(int argc, char* argv[])
   {
     culled = phong->GetUsedClosedSurfaceCulling() ? 1 : 0;
   }
-  std::printf("RESULT mesh=%s triangles=%lld normals=%s mapper=%s first_s=%.3f steady_ms=%.1f "
-              "data_mb=%.0f peak_above_data_mb=%.0f culled=%d settle_frames=%d frames_ms=%s renderer=%s\n",
+  std::printf(
+    "RESULT mesh=%s triangles=%lld normals=%s mapper=%s first_s=%.3f steady_ms=%.1f "
+    "data_mb=%.0f peak_above_data_mb=%.0f culled=%d settle_frames=%d frames_ms=%s renderer=%s\n",
     options.Mesh.c_str(), static_cast<long long>(mesh->GetNumberOfPolys()),
-    options.Normals ? "yes" : "no", options.Phong ? "phong" : "stock", first, 1e3 * steady,
-    dataMB, StatusMB("VmHWM:") - dataMB, culled, settleFrames, each.c_str(),
-    RendererName(window).c_str());
+    options.Normals ? "yes" : "no", options.Phong ? "phong" : "stock", first, 1e3 * steady, dataMB,
+    StatusMB("VmHWM:") - dataMB, culled, settleFrames, each.c_str(), RendererName(window).c_str());
   return 0;
 }
