@@ -2,8 +2,10 @@
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenMeshNormalsExecution.h"
+#include "vtkOpenMeshNormalsJoin.h"
 #include "vtkOpenMeshNormalsTopology.h"
 #include "vtkPhongCellValidator.h"
 #include "vtkPhongClampedSetter.h"
@@ -64,6 +66,7 @@ int vtkOpenMeshNormals::RequestData(
   this->NumberOfInvalidCells = this->NumberOfNonManifoldFaces = 0;
   this->NumberOfFacesWithRepeatedPoints = 0;
   this->NumberOfDegenerateFaces = this->NumberOfReorientedFaces = this->NumberOfSplitPoints = 0;
+  this->NumberOfJoinedPoints = 0;
   this->TopologyReused = false;
   const vtkSmartPointer<vtkPolyData> input =
     this->CheckCellPointIds(vtkPolyData::GetData(inputVector[0]));
@@ -72,10 +75,49 @@ int vtkOpenMeshNormals::RequestData(
     output->ShallowCopy(input); // empty input: nothing to compute
     return 1;
   }
-  if (!this->UpdateTopology(input))
+  const std::vector<vtkIdType> representative =
+    this->JoinCoincidentPoints && this->ComputePointNormals
+    ? vtkOpenMeshNormalsJoin::Representatives(input, this->JoinTolerance)
+    : std::vector<vtkIdType>();
+  const bool computed = representative.empty()
+    ? this->ComputeNormals(input, output)
+    : this->ComputeJoinedNormals(input, representative, output);
+  if (!computed)
   {
     output->Initialize(); // aborted, or too large
-    return 1;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenMeshNormals::ComputeJoinedNormals(
+  vtkPolyData* input, const std::vector<vtkIdType>& representative, vtkPolyData* output)
+{
+  vtkNew<vtkPolyData> joinedOutput;
+  if (!this->ComputeNormals(
+        vtkOpenMeshNormalsJoin::JoinedCopy(input, representative), joinedOutput))
+  {
+    return false;
+  }
+  const bool splitting = this->Splitting && this->ComputePointNormals;
+  vtkOpenMeshNormalsJoin::GiveNormalsBack(input, representative, joinedOutput, output,
+    splitting ? this->OriginalPointIdsArrayName : nullptr);
+  this->NumberOfSplitPoints = output->GetNumberOfPoints() - input->GetNumberOfPoints();
+  this->NumberOfJoinedPoints = 0;
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(representative.size()); ++p)
+  {
+    this->NumberOfJoinedPoints += representative[p] != p ? 1 : 0;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenMeshNormals::ComputeNormals(vtkPolyData* input, vtkPolyData* output)
+{
+  if (!this->UpdateTopology(input))
+  {
+    return false;
   }
 
   const vtkOpenMeshNormalsExecution::Settings settings{ this->Weighting, this->FeatureAngle,
@@ -89,8 +131,7 @@ int vtkOpenMeshNormals::RequestData(
   this->UpdateProgress(0.75);
   if (this->GetAbortExecute())
   {
-    output->Initialize();
-    return 1;
+    return false;
   }
 
   if (this->ComputePointNormals && !this->Splitting)
@@ -107,15 +148,13 @@ int vtkOpenMeshNormals::RequestData(
   this->UpdateProgress(0.9);
   if (this->GetAbortExecute())
   {
-    output->Initialize();
-    return 1;
+    return false;
   }
 
   execution.BuildOutputPolys();
   execution.WritePoints();
   execution.WriteCells();
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -183,6 +222,8 @@ void vtkOpenMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IncrementalConstruction: " << (this->IncrementalConstruction ? "On" : "Off")
      << "\n";
   os << indent << "AlwaysHalfedgeMesh: " << (this->AlwaysHalfedgeMesh ? "On" : "Off") << "\n";
+  os << indent << "JoinCoincidentPoints: " << (this->JoinCoincidentPoints ? "On" : "Off") << "\n";
+  os << indent << "JoinTolerance: " << this->JoinTolerance << "\n";
   os << indent << "OriginalPointIdsArrayName: "
      << (this->OriginalPointIdsArrayName ? this->OriginalPointIdsArrayName : "(none)") << "\n";
   os << indent << "NumberOfInvalidCells: " << this->NumberOfInvalidCells << "\n";
@@ -192,5 +233,6 @@ void vtkOpenMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfDegenerateFaces: " << this->NumberOfDegenerateFaces << "\n";
   os << indent << "NumberOfReorientedFaces: " << this->NumberOfReorientedFaces << "\n";
   os << indent << "NumberOfSplitPoints: " << this->NumberOfSplitPoints << "\n";
+  os << indent << "NumberOfJoinedPoints: " << this->NumberOfJoinedPoints << "\n";
   os << indent << "TopologyReused: " << (this->TopologyReused ? "yes" : "no") << "\n";
 }

@@ -56,6 +56,7 @@
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
 
 class VTKFILTERSOPENMESH_EXPORT vtkOpenMeshNormals : public vtkPolyDataAlgorithm
 {
@@ -197,6 +198,33 @@ public:
 
   ///@{
   /**
+   * Whether the copies of one point are one vertex for the point normals. Pieces of one
+   * surface (ParaView's ranks, a source's pieces, appended blocks) each hold their own copy of
+   * the points on their cuts; joined, they get the normals of the whole surface, without a
+   * seam. Copies are the points that share a global id (the input's point data GlobalIds),
+   * or, when the input has none, points within JoinTolerance of each other. The output keeps
+   * every copy as its own point, with its own point data (texture coordinates on either side
+   * of a texture seam stay apart); a copy whose corners got different normals is copied again,
+   * as split points are. Default off (VTK's filters treat every point as its own vertex).
+   */
+  vtkSetMacro(JoinCoincidentPoints, vtkTypeBool);
+  vtkGetMacro(JoinCoincidentPoints, vtkTypeBool);
+  vtkBooleanMacro(JoinCoincidentPoints, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * How close two points without global ids must be to be copies of one point
+   * (JoinCoincidentPoints), as a fraction of the input's bounding-box diagonal. Default 1e-6
+   * (pieces of a source compute the same point by different sums, a few float steps apart);
+   * range 0 (the same coordinates only) to 1e-3.
+   */
+  vtkSetClampMacro(JoinTolerance, double, 0.0, 1e-3);
+  vtkGetMacro(JoinTolerance, double);
+  ///@}
+
+  ///@{
+  /**
    * The name of the output point array giving each output point's input point id, written
    * when Splitting is on. Default "vtkOriginalPointIds".
    */
@@ -210,7 +238,8 @@ public:
    * have, collapsed and reported with a warning (vtkPhongCellValidator), faces given their own
    * vertex copies because OpenMesh refused them (non-manifold), faces that repeated a vertex index,
    * faces left with fewer than three distinct vertices, faces whose orientation Consistency or
-   * AutoOrientNormals reversed, points added by Splitting, and whether the topology of the previous
+   * AutoOrientNormals reversed, points added by Splitting (or by JoinCoincidentPoints), points
+   * joined to another as its copy, and whether the topology of the previous
    * execution was reused (only the points had changed).
    */
   vtkGetMacro(NumberOfInvalidCells, vtkIdType);
@@ -219,6 +248,7 @@ public:
   vtkGetMacro(NumberOfDegenerateFaces, vtkIdType);
   vtkGetMacro(NumberOfReorientedFaces, vtkIdType);
   vtkGetMacro(NumberOfSplitPoints, vtkIdType);
+  vtkGetMacro(NumberOfJoinedPoints, vtkIdType);
   vtkGetMacro(TopologyReused, bool);
   ///@}
 
@@ -239,6 +269,8 @@ protected:
   vtkTypeBool NonManifoldTraversal = 1;
   vtkTypeBool IncrementalConstruction = 0;
   vtkTypeBool AlwaysHalfedgeMesh = 0;
+  vtkTypeBool JoinCoincidentPoints = 0;
+  double JoinTolerance = 1e-6;
   char* OriginalPointIdsArrayName = nullptr;
 
   vtkIdType NumberOfInvalidCells = 0;
@@ -247,6 +279,7 @@ protected:
   vtkIdType NumberOfDegenerateFaces = 0;
   vtkIdType NumberOfReorientedFaces = 0;
   vtkIdType NumberOfSplitPoints = 0;
+  vtkIdType NumberOfJoinedPoints = 0;
   bool TopologyReused = false;
 
 private:
@@ -255,6 +288,11 @@ private:
 
   // The input with its cells that name missing points collapsed (and reported).
   vtkSmartPointer<vtkPolyData> CheckCellPointIds(vtkPolyData* input);
+  // The normals of an input whose cells are checked; false if aborted.
+  bool ComputeNormals(vtkPolyData* input, vtkPolyData* output);
+  // The same with the copies of each point joined (JoinCoincidentPoints).
+  bool ComputeJoinedNormals(
+    vtkPolyData* input, const std::vector<vtkIdType>& representative, vtkPolyData* output);
   // Reuses the topology (vtkOpenMeshNormalsTopology) or builds it.
   bool UpdateTopology(vtkPolyData* input);
 

@@ -798,7 +798,6 @@ void vtkOpenMeshNormalsExecution::WritePoints()
 // The input's points, then a copy of each added point's input point.
 void vtkOpenMeshNormalsExecution::WriteSplitPoints()
 {
-  vtkPoints* inputPoints = this->Input->GetPoints();
   const vtkIdType added = static_cast<vtkIdType>(this->SplitSource.size());
   vtkNew<vtkIdList> sources;
   vtkNew<vtkIdList> destinations;
@@ -809,21 +808,27 @@ void vtkOpenMeshNormalsExecution::WriteSplitPoints()
     sources->SetId(i, this->SplitSource[i]);
     destinations->SetId(i, this->NumberOfPoints + i);
   }
-  vtkNew<vtkPoints> points;
-  points->SetDataType(inputPoints->GetDataType());
-  points->DeepCopy(inputPoints);
-  points->GetData()->InsertTuples(destinations, sources, inputPoints->GetData());
-  this->Output->SetPoints(points);
-  this->CopySplitPointData(sources, destinations);
+  this->Output->SetPoints(
+    vtkOpenMeshNormalsExecution::ExtendPoints(this->Input->GetPoints(), sources, destinations));
+  vtkOpenMeshNormalsExecution::ExtendPointData(
+    this->Input->GetPointData(), this->Output->GetPointData(), sources, destinations);
 }
 
 //------------------------------------------------------------------------------
-// Every point array but the normals, extended like the points, keeping its
-// attribute role.
-void vtkOpenMeshNormalsExecution::CopySplitPointData(vtkIdList* sources, vtkIdList* destinations)
+vtkSmartPointer<vtkPoints> vtkOpenMeshNormalsExecution::ExtendPoints(
+  vtkPoints* input, vtkIdList* sources, vtkIdList* destinations)
 {
-  vtkPointData* inPD = this->Input->GetPointData();
-  vtkPointData* outPD = this->Output->GetPointData();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataType(input->GetDataType());
+  points->DeepCopy(input);
+  points->GetData()->InsertTuples(destinations, sources, input->GetData());
+  return points;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenMeshNormalsExecution::ExtendPointData(
+  vtkPointData* inPD, vtkPointData* outPD, vtkIdList* sources, vtkIdList* destinations)
+{
   for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
   {
     vtkAbstractArray* source = inPD->GetAbstractArray(a);

@@ -26,6 +26,8 @@
 #include "vtkSmartPointer.h"
 
 class vtkIdList;
+class vtkPointData;
+class vtkPoints;
 class vtkOpenMeshNormalsTopology;
 class vtkPolyData;
 
@@ -136,6 +138,19 @@ public:
    */
   void WriteCells();
 
+  ///@{
+  /**
+   * The input's points and point data (but the normals), extended with copies: the point
+   * sources->GetId(i) copied to destinations->GetId(i), past the input's end. Every array
+   * keeps its attribute role. Split points use them, and so do joined points
+   * (vtkOpenMeshNormalsJoin).
+   */
+  static vtkSmartPointer<vtkPoints> ExtendPoints(
+    vtkPoints* input, vtkIdList* sources, vtkIdList* destinations);
+  static void ExtendPointData(
+    vtkPointData* input, vtkPointData* output, vtkIdList* sources, vtkIdList* destinations);
+  ///@}
+
 private:
   const double* Position(Index corner) const;
   Index WedgeId(Index vertex, Index wedge) const;
@@ -163,7 +178,6 @@ private:
     std::vector<vtkIdType>& degenerateFirst) const;
   void WriteFace(vtkIdType face, vtkIdType* out) const;
   void WriteSplitPoints();
-  void CopySplitPointData(vtkIdList* sources, vtkIdList* destinations);
   void StoreOriginalPointIds();
   void CopyCellData();
   void StoreCellNormals();

@@ -125,12 +125,17 @@ bool vtkPhongSurfaceRepresentation::IsParallel()
 int vtkPhongSurfaceRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  if (this->StashesGhostCells() && vtkPhongSurfaceRepresentation::IsParallel())
+  const bool acrossPieces =
+    this->StashesGhostCells() && vtkPhongSurfaceRepresentation::IsParallel();
+  if (acrossPieces)
   {
     // Collective: every rank must run it on every update, as ParaView does with its
     // geometry filter, whether or not its own piece changed.
     this->GhostCells->Modified();
   }
+  // A piece's points on a cut, and the ghost cells' points, come as copies (a source's own
+  // pieces compute them by different sums): the normals join them.
+  this->Normals->SetJoinCoincidentPoints(acrossPieces);
   const auto wholeExtent = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
   if (this->StashesGhostCells() && inputVector[0]->GetNumberOfInformationObjects() == 1 &&
     inputVector[0]->GetInformationObject(0)->Has(wholeExtent))

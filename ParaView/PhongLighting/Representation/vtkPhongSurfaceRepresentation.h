@@ -17,7 +17,11 @@
  * the representation makes one level of ghost cells (vtkGhostCellsGenerator: ParaView's
  * sources and filters, RedistributeDataSet included, mostly ignore ghost requests) and keeps
  * them through the geometry filter (vtkPhongGhostCellsStash) until the normals are made, then
- * drops them.
+ * drops them. Pieces hold copies of the points on their cuts, which the ghost cells bring
+ * along; a source's own pieces (ParaView's Sphere under MPI) compute them by different sums,
+ * a few float steps apart. The normals treat the copies of a point (by global point id
+ * where the data has them, else by position, within a millionth of the diagonal) as one
+ * vertex: vtkOpenMeshNormals' JoinCoincidentPoints.
  *
  * @sa vtkPhongCompositePolyDataMapper vtkPhongProperty vtkOpenMeshNormals
  */
