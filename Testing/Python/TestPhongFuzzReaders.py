@@ -24,12 +24,14 @@ command, which must exit 1 with one error line. Prints counts per format.
 import argparse
 import collections
 import concurrent.futures
+import itertools
 import os
 import random
 import re
 import resource
 import shutil
 import signal
+import struct
 import sys
 import tempfile
 import time
@@ -265,39 +267,52 @@ def report(results):
 
 
 def header_count_shapes(seed_vtk, directory):
-    """Legacy VTK files whose section counts the file's size cannot hold (issue 28: a
-    `VERTICES 4294967295` of a few hundred bytes made VTK's reader ask for 32 GB), made from
-    the ASCII seed, and the same counts in a binary file: (name, path)."""
+    """Files whose header counts the file cannot hold or whose cells the reader would trust
+    (issue 28): legacy VTK sections that announce more than the file's size (a
+    `VERTICES 4294967295` of a few hundred bytes made VTK's reader ask for 32 GB), cells naming
+    points the file lacks, a binary cell size of 1e9, offsets that run backwards (VTK 9.1's
+    reader crashes on these), and binary PLY list counts that disagree with the payload:
+    (name, path, check)."""
+    from vtkphong import _readers
     with open(seed_vtk, "rb") as stream:
         ascii_seed = stream.read()
-    shapes = {
+    legacy = {
         "VERTICES 4294967295": b"# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\n"
                                b"POINTS 3 float\n0 0 0 1 0 0 0 1 0\nVERTICES 4294967295 3\n1 0\n",
         "POLYGONS 1e9 cells": _with_line(ascii_seed, b"POLYGONS", b"POLYGONS 1000000000 4000000000"),
         "POINTS 2^31": _with_line(ascii_seed, b"POINTS", b"POINTS 2147483647 float"),
         "NORMALS beyond POINT_DATA": _with_line(ascii_seed, b"POINT_DATA", b"POINT_DATA 900000000"),
+        "POLYGONS naming point 4294967295": b"# vtk DataFile Version 3.0\nx\nASCII\n"
+            b"DATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n"
+            b"3 0 1 4294967295\n",
+        "POLYGONS whose cell sizes overrun": b"# vtk DataFile Version 3.0\nx\nASCII\n"
+            b"DATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 2 8\n"
+            b"3 0 1 2\n9 0 1 2\n",
     }
-    from vtkmodules.vtkFiltersSources import vtkSphereSource
-    from vtkmodules.vtkIOLegacy import vtkPolyDataWriter
-    binary = os.path.join(directory, "binary-seed.vtk")
-    writer = vtkPolyDataWriter()
-    sphere = vtkSphereSource()
-    writer.SetInputConnection(sphere.GetOutputPort())
-    writer.SetFileName(binary)
-    writer.SetFileTypeToBinary()
-    writer.Write()
-    with open(binary, "rb") as stream:
-        binary_seed = stream.read()
-    shapes["binary: POINTS beyond the payload"] = _with_line(binary_seed, b"POINTS",
+    binary_old, binary_new = _binary_seeds(directory)
+    legacy["binary: POINTS beyond the payload"] = _with_line(binary_new, b"POINTS",
                                                              b"POINTS 50000000 float")
-    shapes["binary: CONNECTIVITY beyond the payload"] = _with_line(
-        binary_seed, b"POLYGONS", b"POLYGONS 97 600000000")
+    legacy["binary: CONNECTIVITY beyond the payload"] = _with_line(
+        binary_new, b"POLYGONS", b"POLYGONS 97 600000000")
+    legacy["binary: a cell size of 1e9"] = _patch_after(binary_old, b"POLYGONS", 0,
+                                                        (10 ** 9).to_bytes(4, "big"))
+    legacy["binary: CONNECTIVITY naming point 2^40"] = _patch_after(
+        binary_new, b"CONNECTIVITY", 0, (1 << 40).to_bytes(8, "big"))
+    legacy["binary: OFFSETS running backwards"] = _patch_after(binary_new, b"OFFSETS", 8,
+                                                               (1 << 40).to_bytes(8, "big"))
+    shapes = [(name, data, ".vtk", _readers.check_vtk_legacy_counts)
+              for name, data in sorted(legacy.items())]
+    for name, data in sorted(_ply_shapes().items()):
+        shapes.append((name, data, ".ply", _readers.check_ply_header))
+    from vtkphong._xml_cells import check_xml_cells
+    for name, (data, extension) in sorted(xml_files(directory, broken=True).items()):
+        shapes.append((name, data, extension, check_xml_cells))
     paths = []
-    for number, (name, data) in enumerate(sorted(shapes.items())):
-        path = os.path.join(directory, "shape-%d.vtk" % number)
+    for number, (name, data, extension, check) in enumerate(shapes):
+        path = os.path.join(directory, "shape-%d%s" % (number, extension))
         with open(path, "wb") as stream:
             stream.write(data)
-        paths.append((name, path))
+        paths.append((name, path, check))
     return paths
 
 
@@ -308,23 +323,189 @@ def _with_line(data, keyword, replacement):
     return data[:start] + replacement + data[end:]
 
 
+def _binary_seeds(directory):
+    """A sphere as a binary legacy file, in the old format (cell sizes and ids) and in
+    VTK 9's (OFFSETS and CONNECTIVITY)."""
+    from vtkmodules.vtkFiltersSources import vtkSphereSource
+    from vtkmodules.vtkIOLegacy import vtkPolyDataWriter
+    seeds = []
+    sphere = vtkSphereSource()  # kept: the writer's connection does not hold it
+    for version in (42, 51):
+        path = os.path.join(directory, "binary-seed-%d.vtk" % version)
+        writer = vtkPolyDataWriter()
+        writer.SetInputConnection(sphere.GetOutputPort())
+        writer.SetFileName(path)
+        writer.SetFileTypeToBinary()
+        if hasattr(writer, "SetFileVersion"):
+            writer.SetFileVersion(version)
+        writer.Write()
+        with open(path, "rb") as stream:
+            seeds.append(stream.read())
+    return seeds
+
+
+def _patch_after(data, keyword, skip, replacement):
+    """data with the bytes after the line starting with keyword, from `skip` on, overwritten
+    by replacement."""
+    start = data.find(b"\n", data.find(b"\n" + keyword) + 1) + 1 + skip
+    return data[:start] + replacement + data[start + len(replacement):]
+
+
+def _ply_shapes():
+    """Binary PLY files whose list counts disagree with the payload (issue 28: `element vertex
+    0` and two flipped bytes ran assimp's reader out of its 4 GB)."""
+    header = (b"ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n"
+              b"property float y\nproperty float z\nelement face %d\n"
+              b"property list uint int vertex_indices\nend_header\n")
+    vertices = b"".join(struct.pack("<3f", *p) for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0)))
+    face = struct.pack("<I3i", 3, 0, 1, 2)
+    return {
+        "PLY: element vertex 0, a list count flipped": header % (0, 2) + face[:2] +
+            b"\xff\xff" + face[4:] + face,
+        "PLY: a list count past the payload": header % (3, 1) + vertices +
+            struct.pack("<I", 3000000) + face[4:],
+        "PLY: a second face's count flipped": header % (3, 2) + vertices + face +
+            struct.pack("<I", 0x7fff0003) + face[4:],
+    }
+
+
+XML_MODES = ("ascii", "binary", "appended raw", "appended raw zlib", "appended base64 zlib",
+             "binary lzma")
+
+
+def xml_files(directory, broken):
+    """{name: (bytes, extension)}: VTK XML files in every encoding the checks decode. Valid
+    (broken=False): a sphere written by VTK's own writer, which must be read. Broken: cells
+    VTK's readers would build wrongly (an empty polygon, a polygon of two points, a point id
+    past the points, an unstructured grid's tetrahedron of three points), which VTK's
+    writer refuses to write: written here, in the same encodings."""
+    if broken:
+        points = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0)]
+        cases = {"an empty polygon": ("PolyData", [[0, 1, 2], [], [2, 3, 0]]),
+                 "a polygon of two points": ("PolyData", [[0, 1, 2], [2, 3]]),
+                 "a point id past the points": ("PolyData", [[0, 1, 2], [2, 3, 400000]]),
+                 "a tetrahedron of three points": ("UnstructuredGrid", [[0, 1, 2]])}
+        return {"XML %s: %s" % (mode, name): (_xml_bytes(kind, points, cells, mode),
+                                              ".vtp" if kind == "PolyData" else ".vtu")
+                for name, (kind, cells) in cases.items() for mode in XML_MODES}
+    from vtkmodules.vtkFiltersSources import vtkSphereSource
+    sphere = vtkSphereSource()
+    sphere.Update()
+    files = {}
+    for mode in XML_MODES:
+        path = os.path.join(directory, "xml.vtp")
+        _write_xml(sphere.GetOutput(), mode, path)
+        with open(path, "rb") as stream:
+            files["XML %s: sphere" % mode] = (stream.read(), ".vtp")
+    return files
+
+
+def _write_xml(data_set, mode, path):
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(data_set)
+    writer.SetFileName(path)
+    writer.SetCompressorTypeToNone()
+    if "zlib" in mode:
+        writer.SetCompressorTypeToZLib()
+    if "lzma" in mode:
+        writer.SetCompressorTypeToLZMA()
+    if mode == "ascii":
+        writer.SetDataModeToAscii()
+    elif mode.startswith("binary"):
+        writer.SetDataModeToBinary()
+    else:
+        writer.SetDataModeToAppended()
+        writer.SetEncodeAppendedData("base64" in mode)
+    writer.Write()
+
+
+def _xml_bytes(kind, points, cells, mode):
+    """A VTK XML file of `points` and `cells` (polygons, or tetrahedra for a grid), encoded
+    as VTK's writer encodes (UInt32 headers; header and data base64-encoded apart)."""
+    import base64
+    import lzma
+    import zlib
+    compress = zlib.compress if "zlib" in mode else lzma.compress if "lzma" in mode else None
+    arrays = [("Points", "Float32", "f", [c for p in points for c in p], 3),
+              ("connectivity", "Int64", "q", [i for c in cells for i in c], 1),
+              ("offsets", "Int64", "q", list(itertools.accumulate(len(c) for c in cells)), 1)]
+    if kind == "UnstructuredGrid":
+        arrays.append(("types", "UInt8", "B", [10] * len(cells), 1))
+    appended, xml = b"", []
+    for name, vtk_type, code, values, components in arrays:
+        raw = struct.pack("<%d%s" % (len(values), code), *values)
+        if compress:
+            packed = compress(raw)
+            header = struct.pack("<4I", 1, len(raw), len(raw), len(packed))
+        else:
+            packed, header = raw, struct.pack("<I", len(raw))
+        attributes = 'type="%s" Name="%s" NumberOfComponents="%d"' % (vtk_type, name, components)
+        if mode == "ascii":
+            body = " ".join(str(v) for v in values)
+            xml.append('<DataArray %s format="ascii">%s</DataArray>' % (attributes, body))
+        elif mode.startswith("binary"):
+            body = (base64.b64encode(header) + base64.b64encode(packed)).decode()
+            xml.append('<DataArray %s format="binary">%s</DataArray>' % (attributes, body))
+        else:
+            xml.append('<DataArray %s format="appended" offset="%d"/>' % (attributes,
+                                                                        len(appended)))
+            block = header + packed
+            appended += base64.b64encode(header) + base64.b64encode(packed) \
+                if "base64" in mode else block
+    section = "Polys" if kind == "PolyData" else "Cells"
+    count = "NumberOfPolys" if kind == "PolyData" else "NumberOfCells"
+    text = ('<?xml version="1.0"?>\n<VTKFile type="%s" version="1.0" byte_order="LittleEndian" '
+            'header_type="UInt32"%s>\n<%s><Piece NumberOfPoints="%d" %s="%d">'
+            '<Points>%s</Points><%s>%s</%s></Piece></%s>\n'
+            % (kind, ' compressor="%s"' % ("vtkZLibDataCompressor" if "zlib" in mode else
+                                           "vtkLZMADataCompressor") if compress else "",
+               kind, len(points), count, len(cells), xml[0], section, "".join(xml[1:]),
+               section, kind))
+    data = text.encode()
+    if appended:
+        encoding = "base64" if "base64" in mode else "raw"
+        data += b'<AppendedData encoding="%s">\n_' % encoding.encode() + appended + \
+            b"\n</AppendedData>\n"
+    return data + b"</VTKFile>\n"
+
+
+def check_valid_xml(work):
+    """The XML checks pass a valid sphere in every encoding, and the reading stage reads it."""
+    from vtkphong._xml_cells import check_xml_cells
+    failures = []
+    for number, (name, (data, extension)) in enumerate(sorted(xml_files(work, False).items())):
+        path = os.path.join(work, "valid-%d%s" % (number, extension))
+        with open(path, "wb") as stream:
+            stream.write(data)
+        try:
+            check_xml_cells(path)
+        except Exception as failure:  # noqa: BLE001 -- any refusal of a valid file fails
+            failures.append("%s: refused (%s)" % (name, failure))
+            continue
+        outcome = fuzz_one(path, work)[0]
+        print("valid %s: %s" % (name, outcome))
+        if outcome != "ok":
+            failures.append("%s: the reader stage gave %s" % (name, outcome))
+    return failures
+
+
 def check_header_counts(work):
-    """Every shape is refused by the header check, before VTK's reader allocates (under the
-    fuzz's address-space limit VTK's own failed allocation would be refused too), and the
+    """Every shape is refused by its check, before the reader allocates or crashes (under
+    the fuzz's address-space limit a failed allocation would be refused too), and the
     reading stage refuses it (not read, crashed or hung)."""
-    from vtkphong import _readers
     failures = []
     seed = os.path.join(work, "seed.vtk")
-    for name, path in header_count_shapes(seed, work):
+    for name, path, check in header_count_shapes(seed, work):
         try:
-            _readers.check_vtk_legacy_counts(path)
+            check(path)
             reason = None
-        except _readers.ReadFailure as failure:
-            reason = str(failure)
+        except Exception as failure:  # noqa: BLE001 -- ReadFailure is the expected one
+            reason = "%s: %s" % (type(failure).__name__, failure)
         outcome = fuzz_one(path, work)[0]
         print("header count shape %r: %s (%s)" % (name, outcome, reason))
-        if outcome != "refused" or not reason:
-            failures.append("header count shape %r: the reader stage gave %s, the header check"
+        if outcome != "refused" or not reason or not reason.startswith("ReadFailure"):
+            failures.append("header count shape %r: the reader stage gave %s, the check"
                             " %s" % (name, outcome, reason or "let it through"))
     return failures
 
@@ -377,6 +558,7 @@ def main():
                 for _, mutation, path, outcome in results if outcome.startswith("COMMAND")]
     failures += check_through_command(args.cli, results, work, args.cli_sample)
     failures += check_header_counts(work)
+    failures += check_valid_xml(work)
     memory = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss >> 10
     print("%d mutants in %.0f s; this process peaked at %d MB"
           % (len(mutants), time.monotonic() - started, memory))

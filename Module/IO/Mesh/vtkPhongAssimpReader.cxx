@@ -6,6 +6,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPhongAssimpScene.h"
+#include "vtkPhongGltfCheck.h"
 
 #include <vtksys/SystemTools.hxx>
 
@@ -82,16 +83,15 @@ const aiScene* ImportScene(
 
 // Reads the file into output; returns why it failed, or an empty string. The file is read
 // with no post-processing first, so that point clouds can be completed before validation.
-std::string ReadScene(const std::string& path, unsigned int flags, vtkMultiBlockDataSet* output,
-  std::string& warning)
+std::string ReadScene(
+  const std::string& path, unsigned int flags, vtkMultiBlockDataSet* output, std::string& warning)
 {
   Assimp::Importer importer;
   // STL's normals are per facet: they keep every vertex apart (JoinIdenticalVertices joins
   // only vertices equal in every attribute), so the surface could only ever look faceted.
   // Without them the vertices are shared and the mapper computes normals split at sharp
   // edges (its feature angle), as VTK's STL reader and vtkOpenMeshNormals do.
-  if (vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path)) ==
-    ".stl")
+  if (vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path)) == ".stl")
   {
     importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
     flags |= aiProcess_RemoveComponent;
@@ -116,8 +116,8 @@ std::string ReadScene(const std::string& path, unsigned int flags, vtkMultiBlock
   {
     return "it holds no mesh.";
   }
-  const std::string directory = vtksys::SystemTools::GetFilenamePath(
-    vtksys::SystemTools::CollapseFullPath(path));
+  const std::string directory =
+    vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(path));
   if (vtkPhongAssimpScene::AppendBlocks(*scene, directory, output) == 0)
   {
     return "it holds no mesh.";
@@ -185,7 +185,8 @@ std::string vtkPhongAssimpReader::CheckFile() const
     return std::string(this->FileName) + " has " + std::to_string(size) +
       " bytes, more than MaxFileSize (" + std::to_string(this->MaxFileSize) + ").";
   }
-  return std::string();
+  const std::string why = vtkPhongGltfCheck::WhyRefused(this->FileName);
+  return why.empty() ? why : "Cannot read " + std::string(this->FileName) + ": " + why;
 }
 
 //------------------------------------------------------------------------------
@@ -203,8 +204,8 @@ int vtkPhongAssimpReader::RequestData(
   std::string warning;
   try
   {
-    why = ReadScene(this->FileName,
-      PostProcessing(this->Triangulate, this->JoinIdenticalVertices), blocks, warning);
+    why = ReadScene(this->FileName, PostProcessing(this->Triangulate, this->JoinIdenticalVertices),
+      blocks, warning);
   }
   catch (const std::exception& error)
   {

@@ -20,11 +20,10 @@ import json
 import os
 import sys
 
+from vtkphong._errors import ReadFailure  # noqa: F401 -- part of this module's interface
+
 VTK_EXTENSIONS = (".vtp", ".vtu", ".vtk")
 
-
-class ReadFailure(Exception):
-    """The file cannot be read; the message is the reason."""
 
 
 def read_parts(path):
@@ -32,6 +31,9 @@ def read_parts(path):
     extension = os.path.splitext(path)[1].lower()
     if extension == ".vtk":
         check_vtk_legacy_counts(path)
+    if extension in (".vtp", ".vtu"):
+        from vtkphong._xml_cells import check_xml_cells
+        check_xml_cells(path)
     if extension in VTK_EXTENSIONS:
         return [(_read_vtk(path, extension), None, None)]
     if extension == ".ply":
@@ -53,17 +55,25 @@ PLY_SIZES = {"char": 1, "uchar": 1, "int8": 1, "uint8": 1, "short": 2, "ushort":
 
 def check_ply_header(path):
     """Refuse a PLY file whose header does not end (assimp 5.2's PLY importer loops forever
-    on a truncated header) or announces more elements than the file's size can hold."""
+    on a truncated header) or announces more elements than the file's size can hold; in a
+    binary file, walk the elements' records, list counts included (a list count is a number
+    the importer allocates for: one flipped byte made a 600-byte file ask for gigabytes)."""
     with open(path, "rb") as stream:
         head = stream.read(65536)
     end = head.find(b"end_header")
     if not head.startswith(b"ply") or end < 0:
         raise ReadFailure("not a PLY file, or its header does not end in its first 64 KiB")
     header = head[:end].decode("ascii", "replace").splitlines()
-    needed = _ply_smallest_size(header, b"binary" in head[:end])
-    if needed > os.path.getsize(path) - end:
+    binary = b"binary" in head[:end]
+    needed = _ply_smallest_size(header, binary)
+    size = os.path.getsize(path)
+    if needed > size - end:
         raise ReadFailure("its header announces elements needing at least %d bytes; the file"
-                          " has %d" % (needed, os.path.getsize(path)))
+                          " has %d" % (needed, size))
+    if binary:
+        payload = head.find(b"\n", end) + 1
+        big = b"binary_big_endian" in head[:end]
+        _PlyPayload(path, _ply_elements(header), big).walk(payload)
 
 
 def _ply_smallest_size(header, binary):
@@ -83,6 +93,87 @@ def _ply_smallest_size(header, binary):
     return total
 
 
+def _ply_elements(header):
+    """[(name, count, [(count type or None, value type)])] of a PLY header."""
+    elements = []
+    for line in header:
+        words = line.split()
+        if len(words) == 3 and words[0] == "element":
+            elements.append((words[1], int(words[2]), []))
+        elif elements and len(words) >= 5 and words[:2] == ["property", "list"]:
+            elements[-1][2].append((words[2], words[3]))
+        elif elements and len(words) >= 3 and words[0] == "property":
+            elements[-1][2].append((None, words[1]))
+    return elements
+
+
+class _PlyPayload:
+    """A binary PLY's records, walked without reading them into memory: each element's
+    records take the size their properties and list counts give, within the file."""
+
+    NUMPY = {"char": "i1", "uchar": "u1", "int8": "i1", "uint8": "u1", "short": "i2",
+             "ushort": "u2", "int16": "i2", "uint16": "u2", "int": "i4", "uint": "u4",
+             "int32": "i4", "uint32": "u4", "float": "f4", "float32": "f4",
+             "double": "f8", "float64": "f8"}
+
+    def __init__(self, path, elements, big):
+        import mmap
+        self.size = os.path.getsize(path)
+        with open(path, "rb") as stream:
+            self.data = mmap.mmap(stream.fileno(), 0, access=mmap.ACCESS_READ)
+        self.elements, self.order = elements, ">" if big else "<"
+
+    def walk(self, position):
+        for name, count, properties in self.elements:
+            lists = [p for p in properties if p[0]]
+            if not lists:
+                position += count * sum(PLY_SIZES.get(p[1], 1) for p in properties)
+            elif count > 0:
+                position = self.walk_records(name, count, properties, position)
+            if position > self.size:
+                raise ReadFailure("its %s elements end past the file's %d bytes"
+                                  % (name, self.size))
+
+    def count_at(self, kind, position):
+        import numpy
+        if position + PLY_SIZES.get(kind, 1) > self.size:
+            return None
+        return int(numpy.frombuffer(self.data, self.order + self.NUMPY.get(kind, "u1"), 1,
+                                    position)[0])
+
+    def record(self, properties, position, name):
+        """(size, [(offset, count type, count)]) of the record at position."""
+        start, counts = position, []
+        for count_type, value_type in properties:
+            if count_type is None:
+                position += PLY_SIZES.get(value_type, 1)
+                continue
+            n = self.count_at(count_type, position)
+            if n is None or n < 0 or position + n * PLY_SIZES.get(value_type, 1) > self.size:
+                raise ReadFailure("its %s element at byte %d announces a list of %s values, "
+                                  "past the file's %d bytes" % (name, start, n, self.size))
+            counts.append((position - start, count_type, n))
+            position += PLY_SIZES.get(count_type, 1) + n * PLY_SIZES.get(value_type, 1)
+        return position - start, counts
+
+    def walk_records(self, name, count, properties, position):
+        """Where the records end. The common file (every face a triangle) is checked at once:
+        if all records have the first one's list counts, they are equal-sized."""
+        import numpy
+        size, counts = self.record(properties, position, name)
+        if position + count * size <= self.size:
+            rows = numpy.frombuffer(self.data, numpy.uint8, count * size, position)
+            rows = rows.reshape(count, size)
+            if all((rows[:, offset:offset + PLY_SIZES.get(kind, 1)].copy().view(
+                    self.order + self.NUMPY.get(kind, "u1")).ravel() == n).all()
+                   for offset, kind, n in counts):
+                return position + count * size
+        for _ in range(count):
+            size, _counts = self.record(properties, position, name)
+            position += size
+        return position
+
+
 # Bytes of each legacy VTK scalar type in a BINARY file.
 VTK_LEGACY_SIZES = {"bit": 1, "char": 1, "unsigned_char": 1, "short": 2, "unsigned_short": 2,
                     "int": 4, "unsigned_int": 4, "long": 8, "unsigned_long": 8, "float": 4,
@@ -93,9 +184,11 @@ VTK_LEGACY_SIZES = {"bit": 1, "char": 1, "unsigned_char": 1, "short": 2, "unsign
 def check_vtk_legacy_counts(path):
     """Refuse a legacy VTK file whose sections announce more values than its size can hold
     (VTK's reader allocates what a count says first: `VERTICES 4294967295 ...` in a file of
-    a few hundred bytes asked for 32 GB). ASCII values take at least two bytes (a digit and a
-    separator), binary ones their type's size; the sections are walked in order, binary
-    payloads skipped by the size their header states."""
+    a few hundred bytes asked for 32 GB), or whose cells name points it does not have or
+    cannot be told apart (VTK 9.1's reader crashes on a point id of 4294967295, or a cell
+    size of 1e9). ASCII values take at least two bytes (a digit and a separator), binary ones
+    their type's size; the sections are walked in order, binary payloads skipped by the size
+    their header states, then each cell section is read and checked."""
     walk = _LegacyWalk(os.path.getsize(path))
     with open(path, "rb") as stream:
         head = [stream.readline() for _ in range(3)]
@@ -104,9 +197,12 @@ def check_vtk_legacy_counts(path):
         line = stream.readline()
         while line:
             skip = walk.section(line.decode("ascii", "replace").split())
+            walk.place(stream.tell())
             if skip:
                 stream.seek(skip, os.SEEK_CUR)
             line = stream.readline()
+    from vtkphong._legacy_cells import check_cells
+    check_cells(path, walk)
 
 
 class _LegacyWalk:
@@ -120,6 +216,15 @@ class _LegacyWalk:
         self.count = 0              # the current POINT_DATA / CELL_DATA count
         self.cells = (0, 0)         # Version 5: the offsets' and connectivity's lengths
         self.scalars = None         # SCALARS' values and type, due after LOOKUP_TABLE
+        self.points = 0             # POINTS' count
+        self.cell_sections = []     # [keyword, (cells, values) or [offsets, connectivity]]
+        self.unplaced = None        # a cell payload whose file offset comes next
+
+    def place(self, offset):
+        """The file offset where the section just read has its values."""
+        if self.unplaced is not None:
+            self.unplaced.append(offset)
+            self.unplaced = None
 
     def section(self, words):
         """The binary payload's bytes after the header line `words` (0 in ASCII)."""
@@ -139,12 +244,19 @@ class _LegacyWalk:
         if keyword in self.CELL_SECTIONS and len(numbers) >= 2:
             if self.version5:
                 self.cells = (int(numbers[0]), int(numbers[1]))
+                self.cell_sections.append([keyword, self.cells])
                 return 0
             # Each of the n cells takes its size and at least one point id: 2n values at least.
+            self.unplaced = [keyword, (int(numbers[0]), int(numbers[1])), "int"]
+            self.cell_sections.append(self.unplaced)
             return self.values(max(int(numbers[1]), 2 * int(numbers[0])), "int", keyword)
-        if keyword in ("OFFSETS", "CONNECTIVITY") and len(words) >= 2:
+        if keyword in ("OFFSETS", "CONNECTIVITY") and len(words) >= 2 and self.cell_sections:
             length = self.cells[0] if keyword == "OFFSETS" else self.cells[1]
+            self.unplaced = [keyword, length, words[1]]
+            self.cell_sections[-1].append(self.unplaced)
             return self.values(length, words[1], keyword)
+        if keyword == "POINTS" and numbers:
+            self.points = int(numbers[0])
         announced = self.announced(keyword, words, numbers)
         return self.values(announced[0], announced[1], keyword) if announced else 0
 

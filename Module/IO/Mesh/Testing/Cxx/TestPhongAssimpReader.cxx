@@ -2,7 +2,9 @@
 // assimp-testmodels; the directory is the first argument). An OBJ with its MTL (materials,
 // texture path, normals, texture coordinates), PLY colours (8-bit and float), point clouds,
 // a COLLADA scene instancing one mesh under two node transforms, an STL, and broken files
-// that must give an error and an empty output.
+// that must give an error and an empty output; glTF files that crash assimp itself (JSON
+// nested 200 000 levels deep, a chain of 100 000 nodes, a cycle of nodes, a child that does
+// not exist, a GLB whose JSON chunk overruns the file) refused before assimp sees them.
 
 #include "vtkCompositeDataSet.h"
 #include "vtkDoubleArray.h"
@@ -18,8 +20,12 @@
 #include "vtkTestErrorObserver.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "vtkTestUtilities.h"
+
 #include <cmath>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 namespace
@@ -126,9 +132,8 @@ void CheckObjWithMaterials(const std::string& models)
 
 void CheckColor(vtkPolyData* block, vtkIdType point, const unsigned char* rgba, const char* what)
 {
-  auto* colors = block
-    ? vtkUnsignedCharArray::SafeDownCast(block->GetPointData()->GetScalars())
-    : nullptr;
+  auto* colors =
+    block ? vtkUnsignedCharArray::SafeDownCast(block->GetPointData()->GetScalars()) : nullptr;
   bool same = colors && colors->GetNumberOfComponents() == 4 && point < colors->GetNumberOfTuples();
   for (int c = 0; same && c < 4; ++c)
   {
@@ -178,9 +183,8 @@ void CheckNodeTransforms(const std::string& models)
   double a[3], b[3];
   first->GetCenter(a);
   second->GetCenter(b);
-  const double distance =
-    std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-      (a[2] - b[2]) * (a[2] - b[2]));
+  const double distance = std::sqrt(
+    (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
   const double expected = 0.0254 * std::sqrt(120.80132 * 120.80132 + 2.58064 * 2.58064);
   Expect(std::abs(distance - expected) < 1e-4,
     "the instances are " + std::to_string(expected) + " apart (got " + std::to_string(distance) +
@@ -209,13 +213,76 @@ void CheckBrokenFiles(const std::string& models)
     Expect(result.Blocks->GetNumberOfBlocks() == 0, std::string(name) + " gives no block");
   }
   const Result tooBig = Read(models + "/OBJ/spider.obj", 1000);
-  Expect(tooBig.Error && tooBig.Blocks->GetNumberOfBlocks() == 0,
-    "a file over MaxFileSize is refused");
+  Expect(
+    tooBig.Error && tooBig.Blocks->GetNumberOfBlocks() == 0, "a file over MaxFileSize is refused");
   Expect(vtkPhongAssimpReader::CanReadFile("x.glb") && vtkPhongAssimpReader::CanReadFile("x.OBJ") &&
       !vtkPhongAssimpReader::CanReadFile("x.png"),
     "CanReadFile goes by assimp's extensions");
   Expect(vtkPhongAssimpReader::GetSupportedExtensions().find("*.fbx") != std::string::npos,
     "GetSupportedExtensions lists *.fbx");
+}
+
+// A one-triangle glTF whose nodes are `nodes` (node `meshNode` holds the triangle), with
+// `extras` added to its first node.
+std::string Gltf(const std::string& nodes)
+{
+  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" +
+    nodes +
+    R"(, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "accessors": [{)"
+    R"("bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "max": [1, 1, 0],)"
+    R"( "min": [0, 0, 0]}], "bufferViews": [{"buffer": 0, "byteLength": 36}], "buffers": [{)"
+    R"("byteLength": 36, "uri": "data:application/octet-stream;base64,)"
+    R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
+}
+
+// Nodes 0 .. count-1, each the parent of the next; the last holds the mesh.
+std::string NodeChain(int count)
+{
+  std::ostringstream nodes;
+  nodes << "[";
+  for (int i = 0; i < count - 1; ++i)
+  {
+    nodes << R"({"children": [)" << i + 1 << "]}, ";
+  }
+  nodes << R"({"mesh": 0}])";
+  return nodes.str();
+}
+
+std::string WriteFile(const std::string& path, const std::string& bytes)
+{
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+std::string ReadText(const std::string& path)
+{
+  std::ostringstream text;
+  text << std::ifstream(path, std::ios::binary).rdbuf();
+  return text.str();
+}
+
+void CheckGltfStructure(const std::string& models, const std::string& temporary)
+{
+  const std::string box = models + "/glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf";
+  Expect(!Read(box).Error, "assimp's BoxTextured.gltf is read");
+  const std::string original = ReadText(box);
+  const std::string deep = "[" + std::string(200000, '[') + std::string(200000, ']') + "]";
+  const std::pair<std::string, std::string> refused[] = {
+    { "deep.gltf", "{\"extras\": " + deep + ", " + original.substr(original.find('{') + 1) },
+    { "chain.gltf", Gltf(NodeChain(100000)) },
+    { "cycle.gltf", Gltf(R"([{"children": [1], "mesh": 0}, {"children": [0]}])") },
+    { "child.gltf", Gltf(R"([{"children": [7], "mesh": 0}])") },
+    { "chunk.glb", std::string("glTF\x02\0\0\0\x64\0\0\0\0\xca\x9a\x3bJSON{}", 22) },
+  };
+  for (const auto& file : refused)
+  {
+    const Result result = Read(WriteFile(temporary + "/" + file.first, file.second));
+    Expect(result.Error && result.Blocks->GetNumberOfBlocks() == 0,
+      file.first + " is refused with an error, before assimp reads it");
+  }
+  // What assimp reads is still read: the deepest chain allowed, and the same nodes shallow.
+  const Result chain = Read(WriteFile(temporary + "/chain1024.gltf", Gltf(NodeChain(1024))));
+  Expect(!chain.Error && chain.Blocks->GetNumberOfBlocks() == 1, "a chain of 1024 nodes is read");
 }
 }
 
@@ -233,6 +300,11 @@ int TestPhongAssimpReader(int argc, char* argv[])
   CheckNodeTransforms(models);
   CheckStl(models);
   CheckBrokenFiles(models);
+  char* temporary =
+    vtkTestUtilities::GetArgOrEnvOrDefault("-T", argc, argv, "VTK_TEMP_DIR", "Testing/Temporary");
+  const std::string directory = temporary;
+  delete[] temporary;
+  CheckGltfStructure(models, directory);
   std::cout << (Failures == 0 ? "all checks passed" : "some checks failed") << "\n";
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
