@@ -34,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -142,7 +143,8 @@ void vtkPhongClosedSurface::CollectBackground(bool wait)
 //------------------------------------------------------------------------------
 int vtkPhongClosedSurface::Analyse(std::vector<unsigned int>& indices, vtkPolyData* input)
 {
-  if (WeldTriangles(indices, WeldPoints(input)) && IsClosedAndConsistent(indices))
+  if (MayBeClosed(indices, input) && WeldTriangles(indices, WeldPoints(input)) &&
+    IsClosedAndConsistent(indices))
   {
     return Orient(indices, input);
   }
@@ -202,6 +204,59 @@ std::vector<vtkIdType> vtkPhongClosedSurface::WeldPoints(vtkPolyData* input)
     welded[order[k]] = same ? welded[order[k - 1]] : order[k];
   }
   return welded;
+}
+
+//------------------------------------------------------------------------------
+// A closed, consistently oriented surface uses each edge once in each direction, so over all
+// its directed edges (a, b) the sum of f(a, b) - f(b, a) is exactly 0 (modulo 2^64) for any
+// f of the two corners' positions. With f(a, b) = h(a) g(h(b)), h and g hashes, an open
+// surface leaves its boundary loops, whose sum is not 0 but with a chance of 2^-64: false
+// means open (or inconsistent) for certain, with one pass and a hash per point, before
+// the welding and the edge sort, which take 1 GB at 16M triangles (docs/results/
+// performance.md). Positions are hashed by their bits, as the welding compares them
+// (-0 made 0 first); degenerate triangles cancel themselves.
+bool vtkPhongClosedSurface::MayBeClosed(
+  const std::vector<unsigned int>& indices, vtkPolyData* input)
+{
+  auto mix = [](std::uint64_t x)
+  {
+    // splitmix64's finalizer
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  };
+  vtkPoints* points = input->GetPoints();
+  const vtkIdType count = points->GetNumberOfPoints();
+  std::vector<std::uint64_t> hashes(static_cast<size_t>(count));
+  for (vtkIdType p = 0; p < count; ++p)
+  {
+    double x[3];
+    points->GetPoint(p, x);
+    std::uint64_t h = 0x243f6a8885a308d3ull;
+    for (double coordinate : x)
+    {
+      const double zeroed = coordinate + 0.0; // -0 and +0: one position
+      std::uint64_t bits;
+      std::memcpy(&bits, &zeroed, sizeof(bits));
+      h = mix(h ^ bits);
+    }
+    hashes[p] = h;
+  }
+  std::uint64_t sum = 0;
+  for (size_t i = 0; i + 2 < indices.size(); i += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const unsigned int from = indices[i + k], to = indices[i + (k + 1) % 3];
+      if (from >= hashes.size() || to >= hashes.size())
+      {
+        return true; // left to the exact check, which refuses it
+      }
+      const std::uint64_t a = hashes[from], b = hashes[to];
+      sum += a * mix(b ^ 0x9e3779b97f4a7c15ull) - b * mix(a ^ 0x9e3779b97f4a7c15ull);
+    }
+  }
+  return sum == 0;
 }
 
 //------------------------------------------------------------------------------

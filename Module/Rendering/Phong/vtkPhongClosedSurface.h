@@ -112,6 +112,7 @@ private:
   void AnalyseInBackground(std::vector<unsigned int> indices, vtkPolyData* input);
   void CollectBackground(bool wait);
   static bool HasConcavePolygons(vtkPolyData* input);
+  static bool MayBeClosed(const std::vector<unsigned int>& indices, vtkPolyData* input);
   static std::vector<vtkIdType> WeldPoints(vtkPolyData* input);
   static bool WeldTriangles(
     std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded);

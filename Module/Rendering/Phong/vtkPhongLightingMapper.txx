@@ -265,8 +265,12 @@ void vtkPhongLightingMapper<Base>::DrawSurfaces(vtkRenderer* ren, vtkActor* act,
     triangles += static_cast<double>(block->GetNumberOfPolys() + block->GetNumberOfStrips());
   }
   vtkPhongVisibleClusters& clusters = this->Internal->Clusters;
-  const bool culling = everyBlock && settings->GetDepthPrePassOcclusionCulling() &&
-    mode != vtkPhongLightingSettings::DepthPrePassOff &&
+  // The automatic mode's clusters wait for its decision that the pre-pass pays: an open
+  // terrain's probe would arrange them only to find that it does not.
+  const bool wanted = mode == vtkPhongLightingSettings::DepthPrePassOn ||
+    (mode == vtkPhongLightingSettings::DepthPrePassAutomatic &&
+      this->Internal->PrePass.PaysSoFar());
+  const bool culling = everyBlock && settings->GetDepthPrePassOcclusionCulling() && wanted &&
     vtkPhongVisibleClusters::CanCull(ren, act, this, this->Primitives);
   // Culled, the depth pass draws the seen clusters' triangles and nothing else (VTK's
   // triangulated polygons, where `triangles` counts cells).
