@@ -40,6 +40,10 @@
 #                          time Phong Surface against Surface in pvbatch on 1 and 2
 #                          MPI ranks (a 4M-triangle sphere; docs/paraview.md), then what
 #                          an update costs with the normals across pieces (1M triangles)
+#   ./vtkphong.sh paraview-bench-growth
+#                          first frame, steady frame and peak memory of Phong Surface
+#                          against Surface in pvbatch, 16M triangles, 1 and 2 ranks, one
+#                          process per measurement (docs/results/performance.md)
 #
 # The build directory is ./build (override with VTKPHONG_BUILD_DIR); the ParaView
 # build's is ./build-paraview (VTKPHONG_PARAVIEW_BUILD_DIR).
@@ -316,6 +320,13 @@ case "$command" in
         pvbatch --disable-xdisplay-test "$root/ParaView/Testing/BenchPhongParaViewNormals.py" \
         --plugin "$plugin"
     done
+    ;;
+  paraview-bench-growth)
+    install_packages "${paraview_packages[@]}"
+    build_paraview_plugin
+    export PYTHONPATH="$paraview_build/python3-paraview/usr/lib/python3/dist-packages"
+    with_display /usr/bin/python3 "$root/ParaView/Testing/BenchPhongParaViewGrowth.py" \
+      --plugin "$paraview_build/lib/paraview-$paraview_version/plugins/PhongLighting/PhongLighting.so"
     ;;
   bench)
     install_packages
