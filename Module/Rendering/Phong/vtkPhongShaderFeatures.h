@@ -44,6 +44,7 @@ enum class vtkPhongFeature : unsigned char
   LobeBlinn,
   LobePhong,
   MaterialUniforms,
+  NarrowLobe, ///< the specular lobe from a difference vector, exact at shininess above 1e3
   NormalFallback,
   OneSided,
   Parallel,

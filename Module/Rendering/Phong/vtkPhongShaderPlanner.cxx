@@ -368,6 +368,12 @@ void vtkPhongShaderPlanner::SetMaterialFeatures(const Terms& terms, bool allFeat
     features.Set(Feature::LobeBlinn, blinn);
     features.Set(Feature::LobePhong, !blinn);
     features.Set(Feature::SmoothTerminator, phongFront && phongFront->GetSmoothTerminator());
+    // A float cosine near 1 resolves 6e-8, which costs the lobe n * 6e-8 of itself: above
+    // n = 1e3 (6e-5) the lobe comes from a difference vector (vtkPhongLightingLib.glsl).
+    constexpr double NarrowShininess = 1.0e3;
+    features.Set(Feature::NarrowLobe,
+      allFeatures || vtkPhongMaterial::ShininessOf(plan.FrontMaterial) > NarrowShininess ||
+        vtkPhongMaterial::ShininessOf(plan.BackMaterial) > NarrowShininess);
   }
   features.Set(Feature::SoftSpotEdge,
     features.Has(Feature::Spot) && (allFeatures || (phongFront && phongFront->GetSoftSpotEdge())));
@@ -431,6 +437,8 @@ void vtkPhongShaderPlanner::SetNormalFeatures(
 // (which may change the normal; vtkPhongShaderTemplate also checks VTK's normal code), with
 // the Phong lobe (the Blinn halfway vector needs L itself) and as many lights as the varyings
 // carry; `allowed`: the mapper's InterpolatedDotProducts, and not the all-features variant.
+// Not with a narrow lobe (NARROW_LOBE: from dot products the lobe's t = 1 - R.V carries their
+// rounding, 2e-3 of the colour at n = 1e4).
 void vtkPhongShaderPlanner::SetInterpolatedDotsFeature(
   const PrimitiveState& state, bool allowed, std::size_t maximumLights, Plan& plan)
 {
@@ -438,9 +446,10 @@ void vtkPhongShaderPlanner::SetInterpolatedDotsFeature(
   const bool vertexNormal = state.HasPointNormals && !state.HasCellNormals &&
     !state.NormalsFromShape && !state.HasGeometryShader && !state.HasUserShaderCode;
   plan.Features.Set(Feature::InterpolatedDots,
-    allowed && vertexNormal && features.Has(Feature::SumsPerFragment) &&
-      features.Has(Feature::Directional) && !features.Has(Feature::NormalFallback) &&
-      !features.Has(Feature::LobeBlinn) && plan.DirectionalLights.size() <= maximumLights);
+    allowed && vertexNormal && !features.Has(Feature::NarrowLobe) &&
+      features.Has(Feature::SumsPerFragment) && features.Has(Feature::Directional) &&
+      !features.Has(Feature::NormalFallback) && !features.Has(Feature::LobeBlinn) &&
+      plan.DirectionalLights.size() <= maximumLights);
 }
 
 //------------------------------------------------------------------------------

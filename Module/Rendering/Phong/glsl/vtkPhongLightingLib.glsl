@@ -148,12 +148,10 @@ vec3 phongToPositionalLight(vec3 lightPositionVC, vec3 positionVC, vec3 N, out f
 //PHONG_ENDIF
 
 //PHONG_IF SPECULAR
-// S_i*G_i for one light from the cosine of its lobe: the lobe, gated off for a light behind
-// the surface. NdotL is N.L before clamping. Shininess 0 gives a lobe of 1 wherever the gate
-// is open, which GLSL's pow(0, 0) leaves undefined.
-float phongGatedLobe(float cosine, float NdotL, float shininess)
+// S_i*G_i for one light from its lobe: gated off for a light behind the surface. NdotL is
+// N.L before clamping.
+float phongGate(float lobe, float NdotL)
 {
-  float lobe = shininess > 0.0 ? pow(clamp(cosine, 0.0, 1.0), shininess) : 1.0;
 //PHONG_IF SMOOTH_TERMINATOR
   return lobe * max(NdotL, 0.0);
 //PHONG_ENDIF
@@ -165,18 +163,50 @@ float phongGatedLobe(float cosine, float NdotL, float shininess)
 //PHONG_ENDIF
 }
 
+// The same from the cosine of the lobe. Shininess 0 gives a lobe of 1 wherever the gate is
+// open, which GLSL's pow(0, 0) leaves undefined. A float cosine near 1 resolves 6e-8, which
+// costs the lobe n * 6e-8 of itself: nothing up to n = 1e3 (NARROW_LOBE above).
+float phongGatedLobe(float cosine, float NdotL, float shininess)
+{
+  return phongGate(shininess > 0.0 ? pow(clamp(cosine, 0.0, 1.0), shininess) : 1.0, NdotL);
+}
+//PHONG_IF NARROW_LOBE
+
+// The same from the difference of the two unit vectors whose cosine the lobe raises (R - V
+// for Phong, N - H for Blinn), for shininess above 1e3: t = 1 - cos = |A - B|^2 / 2 keeps
+// its relative precision where the cosine itself rounds to 1 (the vectors' length error
+// only scales t by 1 +- 1e-7), and log(1 - t) goes by its series where 1 - t would round.
+// From the cosine the n = 1e6 highlight was 19 % off (docs/results/extremes.md).
+float phongGatedNarrowLobe(vec3 difference, float NdotL, float shininess)
+{
+  float t = 0.5 * dot(difference, difference);
+  float logCosine = t < 1.0e-3 ? -t * (1.0 + t * (0.5 + t * (1.0 / 3.0))) : log(max(1.0 - t, 0.0));
+  return phongGate(t >= 1.0 ? 0.0 : exp(shininess * logCosine), NdotL);
+}
+//PHONG_ENDIF
+
 // S_i*G_i for one light with unit vectors N, L (to the light) and V (to the eye).
 float phongSpecular(vec3 N, vec3 L, vec3 V, float NdotL, float shininess)
 {
 //PHONG_IF LOBE_PHONG
   // R = reflect(-L, N) = 2(N.L)N - L
+//PHONG_IF !NARROW_LOBE
   return phongGatedLobe(dot(2.0 * NdotL * N - L, V), NdotL, shininess);
+//PHONG_ENDIF
+//PHONG_IF NARROW_LOBE
+  return phongGatedNarrowLobe(2.0 * NdotL * N - L - V, NdotL, shininess);
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF LOBE_BLINN
   // H = normalize(L + V); L = -V has no halfway vector and no highlight.
   vec3 halfway = L + V;
   float halfwayLength = length(halfway);
+//PHONG_IF !NARROW_LOBE
   return halfwayLength > 0.0 ? phongGatedLobe(dot(N, halfway) / halfwayLength, NdotL, shininess) : 0.0;
+//PHONG_ENDIF
+//PHONG_IF NARROW_LOBE
+  return halfwayLength > 0.0 ? phongGatedNarrowLobe(N - halfway / halfwayLength, NdotL, shininess) : 0.0;
+//PHONG_ENDIF
 //PHONG_ENDIF
 }
 //PHONG_IF INTERPOLATED_DOTS
