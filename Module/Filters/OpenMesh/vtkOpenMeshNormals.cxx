@@ -101,8 +101,8 @@ bool vtkOpenMeshNormals::ComputeJoinedNormals(
     return false;
   }
   const bool splitting = this->Splitting && this->ComputePointNormals;
-  vtkOpenMeshNormalsJoin::GiveNormalsBack(input, representative, joinedOutput, output,
-    splitting ? this->OriginalPointIdsArrayName : nullptr);
+  vtkOpenMeshNormalsJoin::GiveNormalsBack(
+    input, representative, joinedOutput, output, splitting ? this->OriginalIdsName() : nullptr);
   this->NumberOfSplitPoints = output->GetNumberOfPoints() - input->GetNumberOfPoints();
   this->NumberOfJoinedPoints = 0;
   for (vtkIdType p = 0; p < static_cast<vtkIdType>(representative.size()); ++p)
@@ -122,7 +122,7 @@ bool vtkOpenMeshNormals::ComputeNormals(vtkPolyData* input, vtkPolyData* output)
 
   const vtkOpenMeshNormalsExecution::Settings settings{ this->Weighting, this->FeatureAngle,
     this->Splitting && this->ComputePointNormals, this->ComputeCellNormals != 0,
-    this->AutoOrientNormals != 0, this->FlipNormals != 0, this->OriginalPointIdsArrayName };
+    this->AutoOrientNormals != 0, this->FlipNormals != 0, this->OriginalIdsName() };
   vtkOpenMeshNormalsExecution execution(
     settings, this->Internal->Topology, this->Internal->Workspace, input, output);
   execution.LoadPositions();
@@ -155,6 +155,12 @@ bool vtkOpenMeshNormals::ComputeNormals(vtkPolyData* input, vtkPolyData* output)
   execution.WritePoints();
   execution.WriteCells();
   return true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkOpenMeshNormals::OriginalIdsName() const
+{
+  return this->OriginalPointIdsArrayName ? this->OriginalPointIdsArrayName : "vtkOriginalPointIds";
 }
 
 //------------------------------------------------------------------------------

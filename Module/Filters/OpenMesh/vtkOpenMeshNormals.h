@@ -226,7 +226,7 @@ public:
   ///@{
   /**
    * The name of the output point array giving each output point's input point id, written
-   * when Splitting is on. Default "vtkOriginalPointIds".
+   * when Splitting is on. Default "vtkOriginalPointIds", which null also gives.
    */
   vtkSetStringMacro(OriginalPointIdsArrayName);
   vtkGetStringMacro(OriginalPointIdsArrayName);
@@ -286,6 +286,9 @@ private:
   vtkOpenMeshNormals(const vtkOpenMeshNormals&) = delete;
   void operator=(const vtkOpenMeshNormals&) = delete;
 
+  // OriginalPointIdsArrayName, or "vtkOriginalPointIds" when it is null: split points always
+  // get their array (the joined normals read it back).
+  const char* OriginalIdsName() const;
   // The input with its cells that name missing points collapsed (and reported).
   vtkSmartPointer<vtkPolyData> CheckCellPointIds(vtkPolyData* input);
   // The normals of an input whose cells are checked; false if aborted.

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <numeric>
 
 using namespace vtkOpenMeshNormalsDetail;
 
@@ -772,63 +773,50 @@ void vtkOpenMeshNormalsExecution::WriteFace(vtkIdType f, vtkIdType* out) const
 //------------------------------------------------------------------------------
 void vtkOpenMeshNormalsExecution::WritePoints()
 {
-  vtkPointData* outPD = this->Output->GetPointData();
-  if (this->SplitSource.empty())
-  {
-    this->Output->SetPoints(this->Input->GetPoints());
-    outPD->CopyNormalsOff();
-    outPD->PassData(this->Input->GetPointData());
-  }
-  else
-  {
-    this->WriteSplitPoints();
-  }
+  vtkNew<vtkIdList> copies;
+  copies->SetNumberOfIds(static_cast<vtkIdType>(this->SplitSource.size()));
+  std::copy(this->SplitSource.begin(), this->SplitSource.end(), copies->begin());
+  vtkOpenMeshNormalsExecution::WritePointsWithCopies(this->Input, copies, this->Output);
   if (this->PointNormals)
   {
     this->PointNormals->SetName("Normals");
-    outPD->SetNormals(this->PointNormals);
+    this->Output->GetPointData()->SetNormals(this->PointNormals);
   }
   if (this->Options.Splitting)
   {
-    this->StoreOriginalPointIds();
+    vtkOpenMeshNormalsExecution::StoreOriginalPointIds(
+      this->Output, this->Options.OriginalPointIdsArrayName, this->NumberOfPoints, copies);
   }
 }
 
 //------------------------------------------------------------------------------
-// The input's points, then a copy of each added point's input point.
-void vtkOpenMeshNormalsExecution::WriteSplitPoints()
+void vtkOpenMeshNormalsExecution::WritePointsWithCopies(
+  vtkPolyData* input, vtkIdList* copies, vtkPolyData* output)
 {
-  const vtkIdType added = static_cast<vtkIdType>(this->SplitSource.size());
-  vtkNew<vtkIdList> sources;
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  outPD->Initialize();
+  const vtkIdType added = copies->GetNumberOfIds();
+  if (added == 0)
+  {
+    output->SetPoints(input->GetPoints());
+    outPD->CopyNormalsOff();
+    outPD->PassData(inPD);
+    return;
+  }
   vtkNew<vtkIdList> destinations;
-  sources->SetNumberOfIds(added);
   destinations->SetNumberOfIds(added);
+  const vtkIdType first = input->GetNumberOfPoints();
   for (vtkIdType i = 0; i < added; ++i)
   {
-    sources->SetId(i, this->SplitSource[i]);
-    destinations->SetId(i, this->NumberOfPoints + i);
+    destinations->SetId(i, first + i);
   }
-  this->Output->SetPoints(
-    vtkOpenMeshNormalsExecution::ExtendPoints(this->Input->GetPoints(), sources, destinations));
-  vtkOpenMeshNormalsExecution::ExtendPointData(
-    this->Input->GetPointData(), this->Output->GetPointData(), sources, destinations);
-}
-
-//------------------------------------------------------------------------------
-vtkSmartPointer<vtkPoints> vtkOpenMeshNormalsExecution::ExtendPoints(
-  vtkPoints* input, vtkIdList* sources, vtkIdList* destinations)
-{
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataType(input->GetDataType());
-  points->DeepCopy(input);
-  points->GetData()->InsertTuples(destinations, sources, input->GetData());
-  return points;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenMeshNormalsExecution::ExtendPointData(
-  vtkPointData* inPD, vtkPointData* outPD, vtkIdList* sources, vtkIdList* destinations)
-{
+  vtkPoints* inputPoints = input->GetPoints();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(inputPoints->GetDataType());
+  points->DeepCopy(inputPoints);
+  points->GetData()->InsertTuples(destinations, copies, inputPoints->GetData());
+  output->SetPoints(points);
   for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
   {
     vtkAbstractArray* source = inPD->GetAbstractArray(a);
@@ -838,7 +826,7 @@ void vtkOpenMeshNormalsExecution::ExtendPointData(
     }
     auto copy = vtk::TakeSmartPointer(source->NewInstance());
     copy->DeepCopy(source);
-    copy->InsertTuples(destinations, sources, source);
+    copy->InsertTuples(destinations, copies, source);
     const int index = outPD->AddArray(copy);
     for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
     {
@@ -852,21 +840,16 @@ void vtkOpenMeshNormalsExecution::ExtendPointData(
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenMeshNormalsExecution::StoreOriginalPointIds()
+void vtkOpenMeshNormalsExecution::StoreOriginalPointIds(
+  vtkPolyData* output, const char* idsName, vtkIdType inputPoints, vtkIdList* copies)
 {
   vtkNew<vtkIdTypeArray> originalIds;
-  originalIds->SetName(this->Options.OriginalPointIdsArrayName
-      ? this->Options.OriginalPointIdsArrayName
-      : "vtkOriginalPointIds");
-  const vtkIdType total = this->Output->GetNumberOfPoints();
-  originalIds->SetNumberOfTuples(total);
+  originalIds->SetName(idsName);
+  originalIds->SetNumberOfTuples(inputPoints + copies->GetNumberOfIds());
   vtkIdType* original = originalIds->GetPointer(0);
-  for (vtkIdType p = 0; p < this->NumberOfPoints; ++p)
-  {
-    original[p] = p;
-  }
-  std::copy(this->SplitSource.begin(), this->SplitSource.end(), original + this->NumberOfPoints);
-  this->Output->GetPointData()->AddArray(originalIds);
+  std::iota(original, original + inputPoints, vtkIdType(0));
+  std::copy(copies->begin(), copies->end(), original + inputPoints);
+  output->GetPointData()->AddArray(originalIds);
 }
 
 //------------------------------------------------------------------------------

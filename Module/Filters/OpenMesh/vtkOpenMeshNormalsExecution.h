@@ -26,8 +26,6 @@
 #include "vtkSmartPointer.h"
 
 class vtkIdList;
-class vtkPointData;
-class vtkPoints;
 class vtkOpenMeshNormalsTopology;
 class vtkPolyData;
 
@@ -77,7 +75,7 @@ public:
     bool ComputeCellNormals;
     bool AutoOrientNormals;
     bool FlipNormals;
-    const char* OriginalPointIdsArrayName;
+    const char* OriginalPointIdsArrayName; // not null
   };
 
   vtkOpenMeshNormalsExecution(const Settings& settings, vtkOpenMeshNormalsTopology& topology,
@@ -140,15 +138,15 @@ public:
 
   ///@{
   /**
-   * The input's points and point data (but the normals), extended with copies: the point
-   * sources->GetId(i) copied to destinations->GetId(i), past the input's end. Every array
-   * keeps its attribute role. Split points use them, and so do joined points
+   * The output's points and point data: the input's, then a copy of each input point
+   * `copies` names, every array but the normals keeping its attribute role (without copies,
+   * the input's own arrays); then the array named `idsName` giving each output point's input
+   * point. Split points use them, and so do the copies of joined points
    * (vtkOpenMeshNormalsJoin).
    */
-  static vtkSmartPointer<vtkPoints> ExtendPoints(
-    vtkPoints* input, vtkIdList* sources, vtkIdList* destinations);
-  static void ExtendPointData(
-    vtkPointData* input, vtkPointData* output, vtkIdList* sources, vtkIdList* destinations);
+  static void WritePointsWithCopies(vtkPolyData* input, vtkIdList* copies, vtkPolyData* output);
+  static void StoreOriginalPointIds(
+    vtkPolyData* output, const char* idsName, vtkIdType inputPoints, vtkIdList* copies);
   ///@}
 
 private:
@@ -177,8 +175,6 @@ private:
   void CountPolygonSizes(vtkIdType* offsets, std::vector<vtkIdType>& degenerateIds,
     std::vector<vtkIdType>& degenerateFirst) const;
   void WriteFace(vtkIdType face, vtkIdType* out) const;
-  void WriteSplitPoints();
-  void StoreOriginalPointIds();
   void CopyCellData();
   void StoreCellNormals();
 

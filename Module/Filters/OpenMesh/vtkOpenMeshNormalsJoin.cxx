@@ -5,14 +5,13 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
-#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkOpenMeshNormalsExecution.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticPointLocator.h"
 
+#include <algorithm>
 #include <map>
 #include <unordered_map>
 #include <utility>
@@ -192,21 +191,10 @@ void vtkOpenMeshNormalsJoin::GiveNormalsBack(vtkPolyData* input,
 
   // The input's points and data, the copies, and each point's normal.
   const vtkIdType copies = static_cast<vtkIdType>(assignment.CopySource.size());
-  vtkNew<vtkIdList> sources;
-  vtkNew<vtkIdList> destinations;
-  sources->SetNumberOfIds(copies);
-  destinations->SetNumberOfIds(copies);
-  for (vtkIdType i = 0; i < copies; ++i)
-  {
-    sources->SetId(i, assignment.CopySource[i]);
-    destinations->SetId(i, n + i);
-  }
-  output->SetPoints(
-    vtkOpenMeshNormalsExecution::ExtendPoints(input->GetPoints(), sources, destinations));
-  vtkPointData* outPD = output->GetPointData();
-  outPD->Initialize();
-  vtkOpenMeshNormalsExecution::ExtendPointData(input->GetPointData(), outPD, sources, destinations);
-
+  vtkNew<vtkIdList> copied;
+  copied->SetNumberOfIds(copies);
+  std::copy(assignment.CopySource.begin(), assignment.CopySource.end(), copied->begin());
+  vtkOpenMeshNormalsExecution::WritePointsWithCopies(input, copied, output);
   vtkNew<vtkFloatArray> pointNormals;
   pointNormals->SetName("Normals");
   pointNormals->SetNumberOfComponents(3);
@@ -221,16 +209,9 @@ void vtkOpenMeshNormalsJoin::GiveNormalsBack(vtkPolyData* input,
     normals->GetTuple(from, normal);
     pointNormals->SetTuple(p, normal);
   }
-  outPD->SetNormals(pointNormals);
+  output->GetPointData()->SetNormals(pointNormals);
   if (original)
   {
-    vtkNew<vtkIdTypeArray> originalIds;
-    originalIds->SetName(originalIdsName);
-    originalIds->SetNumberOfTuples(n + copies);
-    for (vtkIdType p = 0; p < n + copies; ++p)
-    {
-      originalIds->SetValue(p, p < n ? p : assignment.CopySource[p - n]);
-    }
-    outPD->AddArray(originalIds);
+    vtkOpenMeshNormalsExecution::StoreOriginalPointIds(output, originalIdsName, n, copied);
   }
 }

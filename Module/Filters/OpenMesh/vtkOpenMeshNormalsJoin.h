@@ -6,10 +6,10 @@
  * own copy of the points on their cuts, and a normal computed on such a mesh stops at the cut:
  * a seam. Copies (points that share a global id, the point data's GlobalIds, or without
  * them points within a tolerance of each other) are one vertex for the normals: the polygons are
- * renumbered onto one representative per global id, the normals are computed on that joined copy,
- * and each corner's normal is then given back to the input's own point, so that every copy keeps
- * its own point data (texture coordinates, scalars). A point whose corners got different normals
- * (split at a sharp edge) gets a copy per normal, as vtkOpenMeshNormals' splitting does.
+ * renumbered onto one representative per group of copies, the normals are computed on that joined
+ * copy, and each corner's normal is then given back to the input's own point, so that every copy
+ * keeps its own point data (texture coordinates, scalars). A point whose corners got different
+ * normals (split at a sharp edge) gets a copy per normal, as vtkOpenMeshNormals' splitting does.
  *
  * Private to vtkOpenMeshNormals (JoinCoincidentPoints).
  */
@@ -44,8 +44,9 @@ public:
   /**
    * The output: the input's points (and copies where a point's corners got different
    * normals), with the normals the joined copy's corners got; the joined output's cells and
-   * cell data. originalIdsName: the joined output's array of original point ids (null if
-   * it has none), written again for the output's points.
+   * cell data. originalIdsName: the joined output's array of original point ids (null when
+   * the normals were not split, and the joined output has no added point), written again for
+   * the output's points.
    */
   static void GiveNormalsBack(vtkPolyData* input, const std::vector<vtkIdType>& representative,
     vtkPolyData* joined, vtkPolyData* output, const char* originalIdsName);

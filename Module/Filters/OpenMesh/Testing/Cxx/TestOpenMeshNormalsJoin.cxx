@@ -4,7 +4,8 @@
 //   sphere's normals, by position and by global ids; global ids, where present, decide;
 // - every copy keeps its own point data;
 // - a cube whose faces each have their own points: joined, each keeps its face's normal with
-//   splitting, and gets the corner's shared normal without;
+//   splitting (also with OriginalPointIdsArrayName unset), and gets the corner's shared normal
+//   without;
 // - a cube of shared points cut into two pieces: points whose corners fall on different
 //   sides of a sharp edge are copied, and every corner carries its face's normal.
 
@@ -203,6 +204,16 @@ void CheckCubes(vtkPhongTest::Checks& checks)
   checks.Expect(split->GetNumberOfPoints() == 24, "cube of own points, joined, split: 24 points");
   checks.Expect(CornersCarryFaceNormals(split, 1e-6), "joined and split: face normals");
   checks.Expect(KeepsPointData(faces, split, "TCoords"), "texture coordinates kept");
+  // Without a name for the original ids the filter's default still maps the split points
+  // back (a null name made the joined normals index past the input's points).
+  vtkNew<vtkOpenMeshNormals> unnamed;
+  unnamed->SetInputData(faces);
+  unnamed->JoinCoincidentPointsOn();
+  unnamed->SetOriginalPointIdsArrayName(nullptr);
+  unnamed->Update();
+  checks.Expect(CornersCarryFaceNormals(unnamed->GetOutput(), 1e-6) &&
+      unnamed->GetOutput()->GetPointData()->GetArray("vtkOriginalPointIds"),
+    "joined and split, original ids unnamed: face normals, vtkOriginalPointIds written");
   auto shared = NormalsOf(faces, true, false);
   checks.Expect(LargestRadialError(shared) < 0.05, "joined, not split: the corner's normal");
 
