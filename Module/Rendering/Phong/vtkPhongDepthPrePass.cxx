@@ -153,6 +153,15 @@ bool vtkPhongDepthPrePass::Pays(
 }
 
 //------------------------------------------------------------------------------
+// A probe of the pre-pass is not free (its depth pass of every triangle: on llvmpipe about
+// 470 MB above the data at 8M triangles, besides its time): only where the pre-pass could
+// pay even if no fragment stayed visible.
+bool vtkPhongDepthPrePass::CouldPay(double depthTriangles, int evaluatedLights) const
+{
+  return Pays(this->ShadedCount, 0.0, depthTriangles, evaluatedLights);
+}
+
+//------------------------------------------------------------------------------
 bool vtkPhongDepthPrePass::Decide(
   int evaluatedLights, double triangles, double depthTriangles, vtkWindow* window)
 {
@@ -174,10 +183,7 @@ bool vtkPhongDepthPrePass::Decide(
   }
   else if (this->VisibleCount <= 0.0)
   {
-    // Then probe the pre-pass, unless it could not pay even if no fragment stayed visible:
-    // the probe's depth pass of every triangle is not free (on llvmpipe about 470 MB above
-    // the data at 8M triangles, besides its time).
-    usePrePass = Pays(this->ShadedCount, 0.0, depthTriangles, evaluatedLights);
+    usePrePass = this->CouldPay(depthTriangles, evaluatedLights); // then probe the pre-pass
   }
   else if (!this->Decided || this->Refreshing || evaluatedLights != this->LightsAtDecision ||
     triangles != this->TrianglesAtDecision ||
@@ -206,10 +212,9 @@ bool vtkPhongDepthPrePass::Decide(
     const double seen = this->DecidedPrePass ? this->VisibleCount : this->ShadedCount;
     this->Refreshing = ++this->FramesSinceDecision >= ReprobeInterval ||
       std::abs(seen - this->SeenAtDecision) > ReprobeChange * this->SeenAtDecision;
-    // A refresh probes the pre-pass only where it could pay (see the first probe).
-    const bool probe = this->Refreshing && !this->DecidedPrePass;
-    usePrePass = probe ? Pays(this->ShadedCount, 0.0, depthTriangles, evaluatedLights)
-                       : (this->Refreshing ? !this->DecidedPrePass : this->DecidedPrePass);
+    usePrePass = this->Refreshing
+      ? !this->DecidedPrePass && this->CouldPay(depthTriangles, evaluatedLights)
+      : this->DecidedPrePass;
   }
   this->LastWithPrePass = usePrePass;
   return usePrePass;

@@ -125,6 +125,9 @@ private:
     vtkRenderer* ren, bool counting, const std::function<void(bool depthOnly)>& draw);
   void CollectCounts();
   void Reset();
+  // Whether a probe of the pre-pass is worth drawing: Pays for the last shaded count with no
+  // fragment left visible, the model's best case.
+  bool CouldPay(double depthTriangles, int evaluatedLights) const;
 
   unsigned int Queries[2] = { 0, 0 };
   vtkWindow* Window = nullptr;
