@@ -25,7 +25,6 @@ from vtkphong._errors import ReadFailure  # noqa: F401 -- part of this module's 
 VTK_EXTENSIONS = (".vtp", ".vtu", ".vtk")
 
 
-
 def read_parts(path):
     """[(polydata, material dict or None, texture path or None)] of the file."""
     extension = os.path.splitext(path)[1].lower()
@@ -63,9 +62,9 @@ def check_ply_header(path):
     end = head.find(b"end_header")
     if not head.startswith(b"ply") or end < 0:
         raise ReadFailure("not a PLY file, or its header does not end in its first 64 KiB")
-    header = head[:end].decode("ascii", "replace").splitlines()
+    elements = _ply_elements(head[:end].decode("ascii", "replace").splitlines())
     binary = b"binary" in head[:end]
-    needed = _ply_smallest_size(header, binary)
+    needed = _ply_smallest_size(elements, binary)
     size = os.path.getsize(path)
     if needed > size - end:
         raise ReadFailure("its header announces elements needing at least %d bytes; the file"
@@ -73,24 +72,17 @@ def check_ply_header(path):
     if binary:
         payload = head.find(b"\n", end) + 1
         big = b"binary_big_endian" in head[:end]
-        _PlyPayload(path, _ply_elements(header), big).walk(payload)
+        _PlyPayload(path, elements, big).walk(payload)
 
 
-def _ply_smallest_size(header, binary):
+def _ply_smallest_size(elements, binary):
     """The fewest bytes the elements of a PLY header can take: per element, the sum of its
     scalar sizes (a list: its count's) in binary, a digit and a separator in ASCII."""
-    total, count = 0, 0
-    for line in header:
-        words = line.split()
-        if len(words) == 3 and words[0] == "element":
-            if not words[2].isdigit():
-                raise ReadFailure("its header's element %r has no count" % words[1])
-            count = int(words[2])
-            total += 0 if binary else 2 * count
-        elif binary and len(words) >= 3 and words[0] == "property":
-            scalar = words[2] if words[1] == "list" else words[1]
-            total += count * PLY_SIZES.get(scalar, 1)
-    return total
+    if not binary:
+        return sum(2 * count for _, count, _ in elements)
+    return sum(count * sum(PLY_SIZES.get(count_type or value_type, 1)
+                           for count_type, value_type in properties)
+               for _, count, properties in elements)
 
 
 def _ply_elements(header):
@@ -99,9 +91,11 @@ def _ply_elements(header):
     for line in header:
         words = line.split()
         if len(words) == 3 and words[0] == "element":
+            if not words[2].isdigit():
+                raise ReadFailure("its header's element %r has no count" % words[1])
             elements.append((words[1], int(words[2]), []))
-        elif elements and len(words) >= 5 and words[:2] == ["property", "list"]:
-            elements[-1][2].append((words[2], words[3]))
+        elif elements and len(words) >= 3 and words[:2] == ["property", "list"]:
+            elements[-1][2].append((words[2], words[3] if len(words) > 3 else "uchar"))
         elif elements and len(words) >= 3 and words[0] == "property":
             elements[-1][2].append((None, words[1]))
     return elements

@@ -126,8 +126,8 @@ class _Decoder:
                                 dtype).astype(numpy.int64)
 
     def _block_header(self, read):
-        """The header's words, read(count of bytes) giving the bytes; then the data's
-        sizes: [total] uncompressed, [blocks, block size, last size, sizes...] compressed."""
+        """The header's words, read(start, count) giving its bytes from start on: the data's
+        sizes, [total] uncompressed, [blocks, block size, last size, sizes...] compressed."""
         width = self.header.itemsize
         if not self.compressor:
             return [int(numpy.frombuffer(read(0, width), self.header)[0])]
@@ -161,21 +161,12 @@ class _Decoder:
             if len(got) < count:
                 raise ReadFailure("an array's base64 runs past its end")
             return got
-        words = 1 if not self.compressor else 3
-        header = numpy.frombuffer(decode(offset, words * width), self.header).tolist()
-        if self.compressor:
-            if header[0] > len(text):
-                raise ReadFailure("a compressed array announces %d blocks" % header[0])
-            header = numpy.frombuffer(decode(offset, (3 + header[0]) * width),
-                                      self.header).tolist()
-        chars = (len(header) * width + 2) // 3 * 4
-        if b"=" not in bytes(text[offset + chars - 2:offset + chars]) and \
-                len(header) * width % 3:
+        header = self._block_header(lambda start, count: decode(offset, start + count)[start:])
+        size = len(header) * width
+        chars = (size + 2) // 3 * 4
+        if size % 3 and b"=" not in bytes(text[offset + chars - 2:offset + chars]):
             # One block: the data follows the header inside it.
-            whole = decode(offset, len(header) * width + header[0] if not self.compressor
-                           else len(header) * width + sum(header[3:]))
-            rest = whole[len(header) * width:]
-            return self._payload(header, lambda count: rest[:count])
+            return self._payload(header, lambda count: decode(offset, size + count)[size:])
         return self._payload(header, lambda count: decode(offset + chars, count))
 
     def _payload(self, header, read):
