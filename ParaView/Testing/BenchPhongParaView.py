@@ -15,13 +15,13 @@ import argparse
 import statistics
 import time
 
-from phong_paraview_testing import prefer_pythonpath
+from phong_paraview_testing import prefer_pythonpath, still_view
 
 prefer_pythonpath()
 
 from paraview import servermanager  # noqa: E402
-from paraview.simple import (AddLight, Contour, CreateRenderView, LoadPlugin,  # noqa: E402
-                             Render, Show, Sphere, Wavelet)
+from paraview.simple import (AddLight, Contour, LoadPlugin, Render, Show, Sphere,  # noqa: E402
+                             Wavelet)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -32,9 +32,7 @@ args = parser.parse_args()
 
 LoadPlugin(args.plugin, remote=False, ns=globals())
 ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
-view = CreateRenderView()
-view.OrientationAxesVisibility = 0
-view.LODThreshold = 1e9  # still frames only
+view = still_view()
 view.UseLight = 0
 for index, (kind, position) in enumerate((("Directional", [1, 1, 2]), ("Positional", [-2, 0, 1]),
                                            ("Positional", [0, 2, 1]))):

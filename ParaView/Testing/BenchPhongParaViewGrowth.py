@@ -35,19 +35,14 @@ def memory_mb(field):
 
 def measure(args):
     """One process per rank (--symmetric): every rank runs this."""
-    from phong_paraview_testing import prefer_pythonpath
+    from phong_paraview_testing import bare_sphere, prefer_pythonpath, still_view
     prefer_pythonpath()
-    from paraview.simple import (CreateRenderView, GetActiveCamera, LoadPlugin, PassArrays,
-                                 Render, Show, Sphere)
+    from paraview.simple import GetActiveCamera, LoadPlugin, Render, Show
     from vtkmodules.vtkParallelCore import vtkMultiProcessController
     LoadPlugin(args.plugin, remote=False, ns=globals())
     rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
-    view = CreateRenderView()
-    view.ViewSize = [800, 800]
-    view.OrientationAxesVisibility = 0
-    view.LODThreshold = 1e9  # still frames only
-    sphere = Sphere(ThetaResolution=args.resolution, PhiResolution=args.resolution)
-    bare = PassArrays(Input=sphere, PointDataArrays=[], CellDataArrays=[])
+    view = still_view([800, 800])
+    _, bare = bare_sphere(args.resolution)
     bare.UpdatePipeline()
     data_mb = memory_mb("VmRSS")
     start = time.perf_counter()

@@ -15,13 +15,12 @@ import argparse
 import statistics
 import time
 
-from phong_paraview_testing import prefer_pythonpath
+from phong_paraview_testing import bare_sphere, prefer_pythonpath, still_view
 
 prefer_pythonpath()
 
 from paraview import servermanager  # noqa: E402
-from paraview.simple import (CreateRenderView, LoadPlugin, PassArrays, Render,  # noqa: E402
-                             Show, Sphere)
+from paraview.simple import LoadPlugin, Render, Show  # noqa: E402
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -32,12 +31,8 @@ args = parser.parse_args()
 
 LoadPlugin(args.plugin, remote=False, ns=globals())
 ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
-view = CreateRenderView()
-view.ViewSize = [800, 600]
-view.OrientationAxesVisibility = 0
-view.LODThreshold = 1e9  # still frames only
-sphere = Sphere(ThetaResolution=args.resolution, PhiResolution=args.resolution)
-bare = PassArrays(Input=sphere, PointDataArrays=[], CellDataArrays=[])
+view = still_view([800, 600])
+sphere, bare = bare_sphere(args.resolution)
 display = Show(bare, view)
 Render(view)
 

@@ -204,8 +204,7 @@ def main():
 
     sphere = Sphere(ThetaResolution=24, PhiResolution=24, Radius=0.5)
     if args.from_source:
-        bare = PassArrays(Input=Sphere(ThetaResolution=24, PhiResolution=24, Radius=0.5),
-                          PointDataArrays=[], CellDataArrays=[])
+        bare = PassArrays(Input=sphere, PointDataArrays=[], CellDataArrays=[])
     else:
         bare = XMLPolyDataReader(FileName=[write_bare_sphere(args.out)])
     pieces = RedistributeDataSet(Input=bare)

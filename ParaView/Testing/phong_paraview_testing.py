@@ -37,6 +37,26 @@ def load_plugin(args, ns):
     return servermanager.ActiveConnection.GetNumberOfDataPartitions()
 
 
+def still_view(size=None):
+    """A render view that draws still frames only (no level of detail, which would time
+    another mesh), without the orientation axes; `size`: [width, height]."""
+    from paraview.simple import CreateRenderView
+    view = CreateRenderView()
+    if size:
+        view.ViewSize = list(size)
+    view.OrientationAxesVisibility = 0
+    view.LODThreshold = 1e9
+    return view
+
+
+def bare_sphere(resolution):
+    """(source, output): ParaView's Sphere at `resolution` (theta and phi) and the same
+    without its normals (PassArrays): data without normals, one piece per rank."""
+    from paraview.simple import PassArrays, Sphere
+    sphere = Sphere(ThetaResolution=resolution, PhiResolution=resolution)
+    return sphere, PassArrays(Input=sphere, PointDataArrays=[], CellDataArrays=[])
+
+
 def fail(message):
     """A failed check: an "ERROR:" line, which ctest's FAIL_REGULAR_EXPRESSION catches."""
     failures.append(message)

@@ -222,8 +222,8 @@ void CheckBrokenFiles(const std::string& models)
     "GetSupportedExtensions lists *.fbx");
 }
 
-// A one-triangle glTF whose nodes are `nodes` (node `meshNode` holds the triangle), with
-// `extras` added to its first node.
+// A one-triangle glTF whose "nodes" array is `nodes` (one of them names mesh 0), its buffer
+// embedded as a data URI.
 std::string Gltf(const std::string& nodes)
 {
   return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" +
