@@ -172,7 +172,9 @@ run_sanitized_tests() {
 }
 
 with_display() {
-  xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
+  # -noreset: an X server resets when its last client leaves and refuses connections while it
+  # does; with tests starting and ending in parallel one of them met that (CI, 2026-11-27).
+  xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"
 }
 
 # Debian 13 (trixie) and Debian testing (forky) from a Debian 12 host: a root made by

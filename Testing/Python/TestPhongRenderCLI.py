@@ -402,7 +402,8 @@ command = subprocess.Popen([args.cli, good, "-o", path("late-display.png"), "--q
                            env=dict(os.environ, DISPLAY=display),
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
 time.sleep(1.0)
-server = subprocess.Popen(["Xvfb", display, "-screen", "0", "640x480x24", "-nolisten", "tcp"],
+server = subprocess.Popen(["Xvfb", display, "-screen", "0", "640x480x24", "-nolisten", "tcp",
+                           "-noreset"],
                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 try:
     stdout, stderr = command.communicate(timeout=120)
