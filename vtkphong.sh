@@ -341,6 +341,8 @@ case "$command" in
       "$root/Testing/Benchmarks/vtkPhongProgramMemory.py"
     PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
       "$root/Testing/Benchmarks/vtkPhongDirectionalCost.py"
+    PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
+      "$root/Testing/Benchmarks/vtkPhongErrorBudget.py"
     ;;
   bench-growth)
     install_packages

@@ -40,9 +40,10 @@ RENDERING_RANKS = {
     # the plan, shared maths, small helpers
     "vtkPhongShaderPlan": 1, "vtkPhongMaterial": 1, "vtkPhongLightGeometry": 1,
     "vtkPhongShaderCode": 1, "vtkPhongBufferBlocks": 1, "vtkPhongScopedCulling": 1,
-    "vtkPhongValidBlocks": 1,
+    "vtkPhongValidBlocks": 1, "vtkPhongGouraudBound": 1,
     # shader path parts and visibility parts, in the order they use each other
     "vtkPhongLightCulling": 2.0, "vtkPhongShadowMaps": 2.0, "vtkPhongDepthPrePass": 2.0,
+    "vtkPhongErrorBudget": 2.05,
     "vtkPhongShaderPlanner": 2.1, "vtkPhongShaderTemplate": 2.1, "vtkPhongLightUniforms": 2.1,
     "vtkPhongMaterialUniforms": 2.1, "vtkPhongVisibleClusters": 2.1,
     "vtkPhongClosedSurface": 2.2,

@@ -252,7 +252,8 @@ result = run(path("sphere.off"), "-o", output, "--size", "120x90", "--quiet", "-
              "spot:0,0,3:1,0.5,0:2", "--light", "directional:-1,1,1", "--lobe",
              "normalized-phong", "--interpolation", "per-vertex-gouraud", "--shininess",
              "5000", "--color", "0.5,0.5,0.5", "--normals-weighting", "angle",
-             "--feature-angle", "45", "--azimuth", "-40", "--elevation", "10", "--zoom", "1.2")
+             "--feature-angle", "45", "--azimuth", "-40", "--elevation", "10", "--zoom", "1.2",
+             "--error-budget", "2")
 checks.expect(result.returncode == 0, "every flag at once (%s)" % result.stderr.strip())
 
 # --- progress, help ------------------------------------------------------------
@@ -278,7 +279,7 @@ for option in ("--output", "--scene", "--size", "--background", "--transparent",
                "--interpolation", "--color", "--ambient", "--diffuse", "--specular",
                "--shininess", "--emission", "--light", "--azimuth", "--elevation", "--zoom",
                "--debug-view", "--debug-light", "--normals-weighting", "--feature-angle",
-               "--quiet", "scene file", "exit status", ".obj", ".exr", "headlight"):
+               "--error-budget", "--quiet", "scene file", "exit status", ".obj", ".exr", "headlight"):
     checks.expect(option in result.stdout, "--help documents " + option)
 
 # --- errors: one line, a non-zero status, no crash ------------------------------
@@ -324,6 +325,8 @@ cases = [
     ((good, "-o", out, "--color", "1,2"), 2, "colour"),
     ((good, "-o", out, "--color", "nan,0,0"), 2, "finite"),
     ((good, "-o", out, "--specular", "2"), 2, "--specular"),
+    ((good, "-o", out, "--error-budget", "-1"), 2, "--error-budget"),
+    ((good, "-o", out, "--error-budget", "nan"), 2, "--error-budget"),
     ((good, "-o", out, "--light", "laser:1,1,1"), 2, "--light"),
     ((good, "-o", out, "--lobe", "cook-torrance"), 2, "--lobe"),
     ((good, "-o", out, "--debug-view", "depth"), 2, "--debug-view"),

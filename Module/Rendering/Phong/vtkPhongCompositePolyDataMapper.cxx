@@ -72,6 +72,18 @@ struct vtkPhongCompositePolyDataMapper::Internals
     return false;
   }
 
+  // A value of the helpers' cores, the largest.
+  double Largest(double (vtkPhongMapperCore::*value)() const)
+  {
+    this->Prune();
+    double largest = 0.0;
+    for (const auto& helper : this->Helpers)
+    {
+      largest = std::max(largest, (helper->GetCore()->*value)());
+    }
+    return largest;
+  }
+
   // A statistic of the helpers' cores, summed.
   int Sum(int (vtkPhongMapperCore::*statistic)() const)
   {
@@ -233,6 +245,12 @@ int vtkPhongCompositePolyDataMapper::GetShaderCompileCount()
 int vtkPhongCompositePolyDataMapper::GetNumberOfShaderVariants()
 {
   return this->Internal->Sum(&vtkPhongMapperCore::GetNumberOfShaderVariants);
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongCompositePolyDataMapper::GetErrorBound()
+{
+  return this->Internal->Largest(&vtkPhongMapperCore::GetErrorBound);
 }
 
 //------------------------------------------------------------------------------

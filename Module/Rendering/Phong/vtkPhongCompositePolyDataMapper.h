@@ -67,6 +67,13 @@ public:
    */
   vtkPhongLightingSettingsForwardingMacro();
 
+  /**
+   * The most the last planned primitives' approximations (light culling, per-vertex
+   * lighting under ErrorBudget) may make a colour stray from the exact model, in 8-bit
+   * levels: the largest over the blocks.
+   */
+  double GetErrorBound();
+
   ///@{
   /**
    * Whether a block mapper culled back faces, and whether one drew with the depth pre-pass,

@@ -121,8 +121,10 @@ double SpotFactorBound(
 
 //------------------------------------------------------------------------------
 int vtkPhongLightCulling::Cull(vtkRenderer* ren, vtkActor* actor, vtkProperty* front,
-  vtkProperty* back, double bound, std::vector<vtkLight*>& points, std::vector<vtkLight*>& spots)
+  vtkProperty* back, double bound, std::vector<vtkLight*>& points, std::vector<vtkLight*>& spots,
+  double& spent)
 {
+  spent = 0.0;
   double boxVC[6];
   if (!(bound > 0.0) || (points.empty() && spots.empty()) || !ActorBoxVC(ren, actor, boxVC))
   {
@@ -172,6 +174,7 @@ int vtkPhongLightCulling::Cull(vtkRenderer* ren, vtkActor* actor, vtkProperty* f
     sum += candidate.Bound;
     dropped.push_back(candidate.Light);
   }
+  spent = sum;
   for (auto* lights : { &points, &spots })
   {
     lights->erase(std::remove_if(lights->begin(), lights->end(),

@@ -43,10 +43,11 @@ public:
    * The actor's colour can change by at most `bound` (per channel, linear, before any
    * clamping) when the lights left out of `points` and `spots` are dropped. `front` and
    * `back` are the materials lighting uses (the same when there is no back material).
-   * Returns how many lights were dropped; bound <= 0 (or NaN) drops none.
+   * Returns how many lights were dropped, and in `spent` the sum of their bounds (how much
+   * of `bound` the culling used); bound <= 0 (or NaN) drops none.
    */
   static int Cull(vtkRenderer* ren, vtkActor* actor, vtkProperty* front, vtkProperty* back,
-    double bound, std::vector<vtkLight*>& points, std::vector<vtkLight*>& spots);
+    double bound, std::vector<vtkLight*>& points, std::vector<vtkLight*>& spots, double& spent);
 
   /**
    * The bound B above for one positional light (spot or not) over the given box in view
@@ -56,9 +57,14 @@ public:
   static double ContributionBound(vtkLight* light, bool isSpot, const double lightPositionVC[3],
     const double spotAxisVC[3], const double boxVC[6], const double materialWeight[3][3]);
 
-private:
-  // Per light colour (ambient, diffuse, specular): the largest ka*Ca, kd*Cd, ks*Cs*norm.
+  /**
+   * Per light colour (ambient, diffuse, specular) and channel: the largest ka*Ca, kd*Cd and
+   * ks*Cs*normalization over both materials, colours that scalars or textures may replace
+   * counting as at least 1. Also the error budget's weights (vtkPhongErrorBudget).
+   */
   static void MaterialWeights(vtkProperty* front, vtkProperty* back, double weights[3][3]);
+
+private:
   static bool ActorBoxVC(vtkRenderer* ren, vtkActor* actor, double boxVC[6]);
 };
 

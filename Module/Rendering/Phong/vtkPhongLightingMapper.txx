@@ -17,6 +17,7 @@
 #include "vtkPhongClosedSurface.h"
 #include "vtkPhongCompatibility.h"
 #include "vtkPhongDepthPrePass.h"
+#include "vtkPhongGouraudBound.h"
 #include "vtkPhongMapperCore.h"
 #include "vtkPhongScopedCulling.h"
 #include "vtkPhongShaderCode.h"
@@ -35,6 +36,8 @@ struct vtkPhongLightingMapper<Base>::Internals
   vtkPhongClosedSurface ClosedSurface;
   vtkPhongDepthPrePass PrePass;
   vtkPhongVisibleClusters Clusters;
+  // The triangles binned for the error budget's per-vertex bound.
+  vtkPhongGouraudBound Triangles;
   // The depth pass of the pre-pass is being drawn (its program computes no light).
   bool DrawingDepthOnly = false;
   bool UsedClosedSurfaceCulling = false;
@@ -136,6 +139,13 @@ bool vtkPhongLightingMapper<Base>::GetNeedToRebuildShaders(
   core->Options.Specialize = settings->GetShaderSpecialization();
   core->Options.InterpolatedDots = settings->GetInterpolatedDotProducts();
   core->Options.LightCullingBound = settings->GetLightCullingBound();
+  core->Options.ErrorBudget = settings->GetErrorBudget() / 255.0;
+  if (core->Options.ErrorBudget > 0.0 && &cellBO == &this->Primitives[Base::PrimitiveTris] &&
+    state.HasPointNormals)
+  {
+    this->Internal->Triangles.Update(this->LitBlocks(), this->VBOBuildTime.GetMTime());
+    state.Triangles = &this->Internal->Triangles;
+  }
   core->Options.LightingWithoutLights = settings->GetLightingWithoutLights();
   core->Options.DepthOnly = this->Internal->DrawingDepthOnly;
   core->MaximumNumberOfPrograms = settings->GetMaximumNumberOfShaderPrograms();

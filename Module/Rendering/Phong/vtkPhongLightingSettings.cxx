@@ -16,14 +16,32 @@ void vtkPhongLightingSettings::SetLightCullingBound(double bound)
 //------------------------------------------------------------------------------
 void vtkPhongLightingSettings::SetLightCullingBound(double bound, vtkObject* reporter)
 {
+  this->SetChecked(reporter, "LightCullingBound", this->LightCullingBound, bound, 1.0e9);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightingSettings::SetErrorBudget(double levels)
+{
+  this->SetErrorBudget(levels, this);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightingSettings::SetErrorBudget(double levels, vtkObject* reporter)
+{
+  this->SetChecked(reporter, "ErrorBudget", this->ErrorBudget, levels, 255.0);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightingSettings::SetChecked(
+  vtkObject* reporter, const char* name, double& member, double value, double largest)
+{
   // The error names the object the user set it on; the change is this object's.
-  double value = this->LightCullingBound;
-  if (vtkPhongSetClamped(reporter, "LightCullingBound", value, bound, 0.0, 1.0e9) &&
-    reporter != this)
+  double stored = member;
+  if (vtkPhongSetClamped(reporter, name, stored, value, 0.0, largest) && reporter != this)
   {
     this->Modified();
   }
-  this->LightCullingBound = value;
+  member = stored;
 }
 
 //------------------------------------------------------------------------------
@@ -71,6 +89,7 @@ void vtkPhongLightingSettings::DeepCopy(vtkPhongLightingSettings* other)
   this->SetShaderSpecialization(other->ShaderSpecialization);
   this->SetInterpolatedDotProducts(other->InterpolatedDotProducts);
   this->SetLightCullingBound(other->LightCullingBound);
+  this->SetErrorBudget(other->ErrorBudget);
   this->SetLightingWithoutLights(other->LightingWithoutLights);
   this->SetDepthPrePass(other->DepthPrePass);
   this->SetDepthPrePassOcclusionCulling(other->DepthPrePassOcclusionCulling);
@@ -88,6 +107,7 @@ void vtkPhongLightingSettings::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InterpolatedDotProducts: " << (this->InterpolatedDotProducts ? "On" : "Off")
      << "\n";
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
+  os << indent << "ErrorBudget: " << this->ErrorBudget << "\n";
   os << indent << "LightingWithoutLights: " << (this->LightingWithoutLights ? "On" : "Off")
      << "\n";
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";

@@ -140,6 +140,31 @@ public:
 
   ///@{
   /**
+   * The error budget: how far, in 8-bit levels, each pixel's linear colour (per channel,
+   * before clamping) may stray from the exact per-fragment model computed in double, so that
+   * the mapper may draw faster. Default 0, range [0, 255]; NaN is refused with an error.
+   * 0 is the exact mode: no approximation enters it and its shaders are those of a mapper
+   * without the setting. Above 0 the mapper spends the budget where a proven bound shows it
+   * fits (docs/lighting-model.md, "Error budget"):
+   * - light culling takes at most half of it (and never more than LightCullingBound);
+   * - a surface with point normals under directional lights is lit at its vertices and the
+   *   sums interpolated (VTK's true Gouraud), when the bound on the difference from
+   *   per-fragment lighting, over every triangle and every light, fits what culling left and
+   *   the mesh's vertices are fewer than the fragments it covers (on sub-pixel triangles
+   *   per-vertex lighting costs more, and the mapper keeps per fragment).
+   * Only in the final view. Each choice is its own cached program.
+   */
+  virtual void SetErrorBudget(double levels);
+  vtkGetMacro(ErrorBudget, double);
+  ///@}
+
+  /**
+   * SetErrorBudget, reporting a refused value through `reporter`.
+   */
+  void SetErrorBudget(double levels, vtkObject* reporter);
+
+  ///@{
+  /**
    * What a surface shows when the renderer has no switched-on light (automatic light
    * creation off, every light removed or switched off: PyVista's `lighting=None` and
    * `remove_all_lights()`, vedo's `lighting("off")` on a renderer). Off (the default), as
@@ -241,6 +266,7 @@ protected:
   bool ShaderSpecialization = true;
   bool InterpolatedDotProducts = true;
   double LightCullingBound = 0.5 / 255.0;
+  double ErrorBudget = 0.0;
   bool LightingWithoutLights = false;
   int DepthPrePass = DepthPrePassAutomatic;
   bool DepthPrePassOcclusionCulling = true;
@@ -248,6 +274,11 @@ protected:
   int MaximumNumberOfShaderPrograms = 32;
 
 private:
+  // A bounded double setting: NaN refused and values clamped to [0, largest], with the error
+  // reported through `reporter`.
+  void SetChecked(vtkObject* reporter, const char* name, double& member, double value,
+    double largest);
+
   vtkPhongLightingSettings(const vtkPhongLightingSettings&) = delete;
   void operator=(const vtkPhongLightingSettings&) = delete;
 };
@@ -398,6 +429,14 @@ private:
   double GetLightCullingBound()                                                                    \
   {                                                                                                \
     return this->GetLightingSettings()->GetLightCullingBound();                                    \
+  }                                                                                                \
+  void SetErrorBudget(double levels)                                                               \
+  {                                                                                                \
+    this->GetLightingSettings()->SetErrorBudget(levels, this);                                     \
+  }                                                                                                \
+  double GetErrorBudget()                                                                          \
+  {                                                                                                \
+    return this->GetLightingSettings()->GetErrorBudget();                                          \
   }                                                                                                \
   void SetLightingWithoutLights(bool on)                                                           \
   {                                                                                                \

@@ -64,6 +64,7 @@ struct vtkPhongMapperCore::Internals
 
   int ShaderCompileCount = 0;
   int CulledLights = 0;
+  double ErrorBound = 0.0;
   double LastShaderBuildTime = 0.0;
   std::string LastSignature;
   std::string LastVertexSource;
@@ -116,6 +117,7 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
     plan = vtkPhongShaderPlan();
   }
   this->Internal->CulledLights = plan.CulledLights;
+  this->Internal->ErrorBound = plan.ErrorBound;
   auto& current = this->Internal->Plans[&cellBO];
   const bool changed = current.Signature != plan.Signature;
   current = std::move(plan);
@@ -515,6 +517,12 @@ double vtkPhongMapperCore::GetLastShaderBuildTime() const
 int vtkPhongMapperCore::GetNumberOfCulledLights() const
 {
   return this->Internal->CulledLights;
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongMapperCore::GetErrorBound() const
+{
+  return this->Internal->ErrorBound * 255.0;
 }
 
 //------------------------------------------------------------------------------

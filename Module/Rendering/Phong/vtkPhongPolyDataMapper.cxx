@@ -296,6 +296,12 @@ double vtkPhongPolyDataMapper::GetDepthPassTriangles()
 }
 
 //------------------------------------------------------------------------------
+double vtkPhongPolyDataMapper::GetErrorBound()
+{
+  return this->GetCore()->GetErrorBound();
+}
+
+//------------------------------------------------------------------------------
 bool vtkPhongPolyDataMapper::GetUsedClosedSurfaceCulling()
 {
   return this->Superclass::GetUsedClosedSurfaceCulling();

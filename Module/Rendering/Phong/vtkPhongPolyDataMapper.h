@@ -110,6 +110,12 @@ public:
    */
   int GetNumberOfCulledLights();
 
+  /**
+   * The most the last planned primitive's approximations (light culling, per-vertex lighting
+   * under ErrorBudget) may make its colour stray from the exact model, in 8-bit levels.
+   */
+  double GetErrorBound();
+
   ///@{
   /**
    * What the last draw did: whether it used the depth pre-pass, the fragments a plain draw

@@ -18,6 +18,7 @@
 #include <vector> // for std::vector
 
 class vtkLight;
+class vtkPhongGouraudBound;
 class vtkProperty;
 
 /**
@@ -37,6 +38,8 @@ struct vtkPhongPrimitiveState
   bool DrawingEdges = false;      ///< surface with edges: VTK's edge colour is ambientColor
   bool DrawingVertices = false;   ///< the vertex-visibility pass
   bool DrawingSelection = false;  ///< the selection-highlight pass
+  /// the triangles binned for the error budget's per-vertex bound; null without a budget
+  vtkPhongGouraudBound* Triangles = nullptr;
 };
 
 /**
@@ -55,6 +58,8 @@ struct vtkPhongPlanOptions
   /// positional lights may be left out of an actor while the colour they could add there
   /// stays within this bound (vtkPhongLightCulling); 0 keeps every light
   double LightCullingBound = 0.5 / 255.0;
+  /// the error budget (linear colour; 0: the exact mode), vtkPhongErrorBudget
+  double ErrorBudget = 0.0;
   /// the depth pre-pass: VTK's fragment shader with no lighting code at all, so that the
   /// pass costs what an unlit draw does (vtkPhongDepthPrePass.h)
   bool DepthOnly = false;
@@ -81,6 +86,7 @@ struct vtkPhongShaderPlan
   int DebugView = 0;                   ///< a vtkPhongLightingSettings::DebugViews value
   int ShadowFactorCount = 0;           ///< vtkShadowMapPass's factors (one per light)
   int CulledLights = 0;                ///< positional lights left out (vtkPhongLightCulling)
+  double ErrorBound = 0.0; ///< under an error budget, the most its approximations may stray
   bool Has(vtkPhongFeature feature) const { return this->Features.Has(feature); }
 };
 

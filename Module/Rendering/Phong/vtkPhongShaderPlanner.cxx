@@ -7,6 +7,8 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightingMapPass.h"
+#include "vtkPhongErrorBudget.h"
+#include "vtkPhongGouraudBound.h"
 #include "vtkPhongLightCulling.h"
 #include "vtkPhongLightGeometry.h"
 #include "vtkPhongLightingSettings.h"
@@ -150,8 +152,12 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
 
   if (options.DebugView == View::Final)
   {
+    // Under an error budget, culling takes at most half of it.
+    const double cullingBound = options.ErrorBudget > 0.0
+      ? std::min(options.LightCullingBound, 0.5 * options.ErrorBudget)
+      : options.LightCullingBound;
     plan.CulledLights = vtkPhongLightCulling::Cull(ren, actor, plan.FrontMaterial,
-      plan.BackMaterial, options.LightCullingBound, plan.PointLights, plan.SpotLights);
+      plan.BackMaterial, cullingBound, plan.PointLights, plan.SpotLights, plan.ErrorBound);
   }
 
   const bool allFeatures = !options.Specialize;
@@ -166,7 +172,9 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   SetTermFeatures(terms, plan);
   SetLightFeatures(terms, allFeatures, plan);
   SetMaterialFeatures(terms, allFeatures, plan);
-  const bool perVertex = SetInterpolationFeatures(terms, state, geometryView, ren, plan);
+  const bool budgetPerVertex = BudgetChoosesPerVertex(ren, actor, terms, state, options, plan);
+  const bool perVertex =
+    SetInterpolationFeatures(terms, state, geometryView, budgetPerVertex, ren, plan);
   SetNormalFeatures(terms, state, perVertex, allFeatures, plan);
   if (this->InterpolatedDotLights == 0)
   {
@@ -381,10 +389,36 @@ void vtkPhongShaderPlanner::SetMaterialFeatures(const Terms& terms, bool allFeat
 }
 
 //------------------------------------------------------------------------------
-// Where the light sums are evaluated (per vertex only for vtkPhongProperty's true Gouraud on
-// surfaces with point normals), and the view and sidedness. Returns whether per vertex.
-bool vtkPhongShaderPlanner::SetInterpolationFeatures(
-  const Terms& terms, const PrimitiveState& state, bool geometryView, vtkRenderer* ren, Plan& plan)
+// Under an error budget, whether the surface's light sums go per vertex (vtkPhongErrorBudget):
+// a smooth surface (point normals that are VTK's, any interpolation but flat) under
+// directional lights only, in the final view, with what light culling left of the budget.
+bool vtkPhongShaderPlanner::BudgetChoosesPerVertex(vtkRenderer* ren, vtkActor* actor,
+  const Terms& terms, const PrimitiveState& state, const Options& options, Plan& plan)
+{
+  vtkPhongGouraudBound* triangles = state.Triangles;
+  const bool smooth = state.HasPointNormals && !state.HasCellNormals && !state.NormalsFromShape &&
+    !state.NormalsMayBeInvalid && !state.HasUserShaderCode && !state.HasGeometryShader &&
+    plan.FrontMaterial->GetInterpolation() != VTK_FLAT;
+  if (!triangles || !(options.ErrorBudget > 0.0) || options.DebugView != View::Final ||
+    !terms.LightSums || terms.PositionalAmbient || !smooth || !options.Specialize)
+  {
+    return false;
+  }
+  double bound = 0.0;
+  const bool chosen = vtkPhongErrorBudget::ChoosePerVertex(ren, actor, plan, *triangles,
+    options.ErrorBudget - plan.ErrorBound, triangles->ChosePerVertex, bound);
+  triangles->ChosePerVertex = chosen;
+  plan.ErrorBound += chosen ? bound : 0.0;
+  return chosen;
+}
+
+//------------------------------------------------------------------------------
+// Where the light sums are evaluated (per vertex for vtkPhongProperty's true Gouraud on
+// surfaces with point normals, or where the error budget chose it), and the view and
+// sidedness. Returns whether per vertex.
+bool vtkPhongShaderPlanner::SetInterpolationFeatures(const Terms& terms,
+  const PrimitiveState& state, bool geometryView, bool budgetPerVertex, vtkRenderer* ren,
+  Plan& plan)
 {
   vtkPhongFeatureSet& features = plan.Features;
   vtkProperty* front = plan.FrontMaterial;
@@ -392,9 +426,10 @@ bool vtkPhongShaderPlanner::SetInterpolationFeatures(
   vtkCamera* camera = ren->GetActiveCamera();
   features.Set(Feature::Parallel, camera && camera->GetParallelProjection());
 
-  const bool perVertex = terms.LightSums && phongFront && phongFront->GetPerVertexGouraud() &&
-    front->GetInterpolation() == VTK_GOURAUD && state.HasPointNormals && !state.NormalsFromShape &&
-    !geometryView;
+  const bool perVertex = budgetPerVertex ||
+    (terms.LightSums && phongFront && phongFront->GetPerVertexGouraud() &&
+      front->GetInterpolation() == VTK_GOURAUD && state.HasPointNormals &&
+      !state.NormalsFromShape && !geometryView);
   features.Set(Feature::PerVertex, perVertex);
   features.Set(Feature::SumsPerVertex, terms.LightSums && perVertex);
   features.Set(Feature::SumsPerFragment, terms.LightSums && !perVertex);

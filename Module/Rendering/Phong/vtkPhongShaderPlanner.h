@@ -83,8 +83,10 @@ private:
   static void SetLightFeatures(const Terms& terms, bool allFeatures, Plan& plan);
   static bool HasSeparateSpecularColors(const Terms& terms, bool allFeatures, const Plan& plan);
   static void SetMaterialFeatures(const Terms& terms, bool allFeatures, Plan& plan);
+  static bool BudgetChoosesPerVertex(vtkRenderer* ren, vtkActor* actor, const Terms& terms,
+    const PrimitiveState& state, const Options& options, Plan& plan);
   static bool SetInterpolationFeatures(const Terms& terms, const PrimitiveState& state,
-    bool geometryView, vtkRenderer* ren, Plan& plan);
+    bool geometryView, bool budgetPerVertex, vtkRenderer* ren, Plan& plan);
   static void SetNormalFeatures(
     const Terms& terms, const PrimitiveState& state, bool perVertex, bool allFeatures, Plan& plan);
   static void SetInterpolatedDotsFeature(

@@ -206,6 +206,12 @@ void vtkPhongSurfaceRepresentation::SetLightCullingBound(double bound)
 }
 
 //------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetErrorBudget(double levels)
+{
+  this->LightingSettings->SetErrorBudget(levels);
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetLightingWithoutLights(int on)
 {
   this->LightingSettings->SetLightingWithoutLights(on != 0);

@@ -75,13 +75,15 @@ public:
    * The lighting settings of both mappers (full resolution and level of detail), one
    * vtkPhongLightingSettings object (where each is documented): the debug view
    * (vtkPhongLightingSettings::DebugViews; default 0, Final), the light the SingleLight view
-   * shows, light culling's bound (default 0.5 / 255; NaN refused), and whether surfaces with
-   * no light switched on show emission and ambient (default off: unlit, as ParaView's
-   * Surface).
+   * shows, light culling's bound (default 0.5 / 255; NaN refused), the error budget in
+   * 8-bit levels (default 0, the exact mode; vtkPhongLightingSettings::SetErrorBudget), and
+   * whether surfaces with no light switched on show emission and ambient (default off:
+   * unlit, as ParaView's Surface).
    */
   void SetDebugView(int view);
   void SetDebugLightIndex(int index);
   void SetLightCullingBound(double bound);
+  void SetErrorBudget(double levels);
   void SetLightingWithoutLights(int on);
 
   /**

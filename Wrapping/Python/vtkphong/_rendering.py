@@ -209,6 +209,7 @@ def _mapper_for(part, settings, progress):
     mapper.SetNormalsSplitting(settings["normals"]["splitting"])
     mapper.SetDebugView(views[settings["debug_view"]])
     mapper.SetDebugLightIndex(settings["debug_light"])
+    mapper.SetErrorBudget(settings["error_budget"])
     progress.observe(mapper.GetNormalsGenerator(), "computing normals")
     return mapper
 

@@ -30,6 +30,7 @@ DEFAULTS = {
     "interpolation": "phong",
     "debug_view": "final",
     "debug_light": 0,
+    "error_budget": 0.0,  # levels; 0 is the exact mode
     "material": {
         "color": None,  # None: the file's colours, else light grey
         "ambient": 0.1,
@@ -135,6 +136,8 @@ def _shading_settings(scene):
             settings[key] = _choice(scene[key], key, choices)
     if "debug_light" in scene:
         settings["debug_light"] = int(_number(scene["debug_light"], "debug_light", 0, 1e6))
+    if "error_budget" in scene:
+        settings["error_budget"] = _number(scene["error_budget"], "error_budget", 0, 255)
     return settings
 
 

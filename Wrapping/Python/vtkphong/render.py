@@ -55,7 +55,7 @@ scene file (--scene FILE.json), every key optional, flags win over it:
   {
     "size": [W, H], "background": [R, G, B], "transparent": false,
     "lobe": "blinn-phong", "interpolation": "phong",
-    "debug_view": "final", "debug_light": 0,
+    "debug_view": "final", "debug_light": 0, "error_budget": 0,
     "renderer_ambient": [1, 1, 1],
     "camera": {"azimuth": 30, "elevation": 20, "zoom": 1},
     "material": {"color": [R, G, B], "ambient": 0.1, "diffuse": 0.8,
@@ -223,6 +223,10 @@ def _add_debug_and_normals_options(parser):
                         help="show one term, the normal, or one light (default final)")
     parser.add_argument("--debug-light", type=int, metavar="I",
                         help="the light shown by --debug-view single-light (default 0)")
+    parser.add_argument("--error-budget", type=_unit_range("--error-budget", 0, 255),
+                        metavar="LEVELS",
+                        help="how far each pixel may stray from the exact model, in 8-bit "
+                        "levels, for speed (default 0: exact; docs/lighting-model.md)")
     parser.add_argument("--normals-weighting", choices=WEIGHTINGS,
                         help="weighting of computed normals (default max)")
     parser.add_argument("--feature-angle", type=_unit_range("--feature-angle", 0, 180),
@@ -245,7 +249,8 @@ def _apply_flags(settings, options):
     flags = {"size": options.size, "background": options.background,
              "transparent": options.transparent, "lobe": options.lobe,
              "interpolation": options.interpolation, "debug_view": options.debug_view,
-             "debug_light": options.debug_light, "lights": options.light}
+             "debug_light": options.debug_light, "lights": options.light,
+             "error_budget": options.error_budget}
     for key, value in flags.items():
         if value is not None:
             settings[key] = value

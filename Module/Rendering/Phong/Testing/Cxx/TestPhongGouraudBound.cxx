@@ -1,0 +1,344 @@
+// vtkPhongGouraudBound against brute force: on real tessellations (a sphere, a torus, a
+// sphere whose normals were disturbed), under random directional lights and views, the
+// largest difference between per-vertex and per-fragment lighting of any triangle, found in
+// double over a barycentric grid, must not exceed the bound. Also the lobe bound alone on
+// random caps of normals around random halfway vectors. Prints how tight the bounds are.
+#include "vtkPhongGouraudBound.h"
+
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricTorus.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+namespace
+{
+using Vector = std::array<double, 3>;
+using Scene = vtkPhongGouraudBound::Scene;
+
+double Dot(const Vector& a, const Vector& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+Vector Unit(Vector a)
+{
+  const double length = std::sqrt(Dot(a, a));
+  return { { a[0] / length, a[1] / length, a[2] / length } };
+}
+
+Vector RandomDirection(std::mt19937& random)
+{
+  std::normal_distribution<double> normal;
+  return Unit({ { normal(random), normal(random), normal(random) } });
+}
+
+// The model's light sums at one point (directional lights; N, V unit): what per-vertex
+// lighting evaluates at the vertices and per-fragment lighting at each fragment.
+double Shade(const Scene& scene, const Vector& n, const Vector& v)
+{
+  double sum = 0.0;
+  for (const Scene::Light& light : scene.Lights)
+  {
+    const Vector& l = light.ToLightMC;
+    const double nl = Dot(n, l);
+    sum += light.Diffuse * std::max(nl, 0.0);
+    double c;
+    if (scene.Blinn)
+    {
+      const Vector h = { { l[0] + v[0], l[1] + v[1], l[2] + v[2] } };
+      const double length = std::sqrt(Dot(h, h));
+      c = length > 0.0 ? Dot(n, h) / length : 0.0;
+    }
+    else
+    {
+      const Vector r = { { 2.0 * nl * n[0] - l[0], 2.0 * nl * n[1] - l[1],
+        2.0 * nl * n[2] - l[2] } };
+      c = Dot(r, v);
+    }
+    const double lobe = std::pow(std::min(std::max(c, 0.0), 1.0), scene.Shininess);
+    const double gate = scene.SmoothTerminator ? std::max(nl, 0.0) : (nl > 1.0e-4 ? 1.0 : 0.0);
+    sum += light.Specular * lobe * gate;
+  }
+  return sum;
+}
+
+Vector ToEye(const Scene& scene, const Vector& p)
+{
+  return scene.Parallel ? scene.ToEyeMC
+                        : Unit({ { scene.EyeMC[0] - p[0], scene.EyeMC[1] - p[1],
+                            scene.EyeMC[2] - p[2] } });
+}
+
+// The largest |per-vertex - per-fragment| over every triangle, side and grid point.
+double BruteForce(vtkPolyData* mesh, const Scene& scene)
+{
+  constexpr int Steps = 8;
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  vtkNew<vtkIdList> ids;
+  double largest = 0.0;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+  {
+    for (vtkIdType t = 1; t + 1 < ids->GetNumberOfIds(); ++t)
+    {
+      const vtkIdType corner[3] = { ids->GetId(0), ids->GetId(t), ids->GetId(t + 1) };
+      Vector n[3], p[3];
+      for (int i = 0; i < 3; ++i)
+      {
+        normals->GetTuple(corner[i], n[i].data());
+        n[i] = Unit(n[i]);
+        mesh->GetPoint(corner[i], p[i].data());
+      }
+      for (double side : { 1.0, -1.0 })
+      {
+        if (side < 0.0 && !scene.TwoSided)
+        {
+          continue;
+        }
+        double atVertex[3];
+        Vector sided[3];
+        for (int i = 0; i < 3; ++i)
+        {
+          sided[i] = { { side * n[i][0], side * n[i][1], side * n[i][2] } };
+          atVertex[i] = Shade(scene, sided[i], ToEye(scene, p[i]));
+        }
+        for (int i = 0; i <= Steps; ++i)
+        {
+          for (int j = 0; i + j <= Steps; ++j)
+          {
+            const double b[3] = { double(i) / Steps, double(j) / Steps,
+              double(Steps - i - j) / Steps };
+            Vector normal{}, position{};
+            for (int k = 0; k < 3; ++k)
+            {
+              for (int c = 0; c < 3; ++c)
+              {
+                normal[c] += b[k] * sided[k][c];
+                position[c] += b[k] * p[k][c];
+              }
+            }
+            if (Dot(normal, normal) < 1.0e-20)
+            {
+              continue;
+            }
+            const double fragment = Shade(scene, Unit(normal), ToEye(scene, position));
+            const double vertex = b[0] * atVertex[0] + b[1] * atVertex[1] + b[2] * atVertex[2];
+            largest = std::max(largest, std::abs(vertex - fragment));
+          }
+        }
+      }
+    }
+  }
+  return largest;
+}
+
+vtkSmartPointer<vtkPolyData> MakeMesh(int kind, std::mt19937& random)
+{
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (kind == 1)
+  {
+    vtkNew<vtkParametricTorus> torus;
+    torus->SetRingRadius(0.6);
+    torus->SetCrossSectionRadius(0.25);
+    vtkNew<vtkParametricFunctionSource> source;
+    source->SetParametricFunction(torus);
+    source->SetUResolution(48);
+    source->SetVResolution(24);
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputConnection(source->GetOutputPort());
+    normals->SplittingOff();
+    normals->Update();
+    mesh = normals->GetOutput();
+  }
+  else
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetThetaResolution(40);
+    sphere->SetPhiResolution(40);
+    sphere->Update();
+    mesh = sphere->GetOutput();
+  }
+  if (kind == 2) // normals disturbed by up to about 0.1 rad: wide caps, uneven ones
+  {
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->DeepCopy(mesh);
+    vtkDataArray* normals = copy->GetPointData()->GetNormals();
+    std::uniform_real_distribution<double> jitter(-0.06, 0.06);
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+    {
+      double* n = normals->GetTuple3(i);
+      normals->SetTuple3(i, n[0] + jitter(random), n[1] + jitter(random), n[2] + jitter(random));
+    }
+    mesh = copy;
+  }
+  return mesh;
+}
+
+Scene RandomScene(std::mt19937& random, int index)
+{
+  const double shininess[] = { 1.0, 2.0, 10.0, 40.0, 200.0, 1.0e3 };
+  std::uniform_real_distribution<double> uniform(0.2, 1.0);
+  Scene scene;
+  scene.Shininess = shininess[index % 6];
+  scene.Blinn = (index / 6) % 2 == 0;
+  scene.Parallel = (index / 12) % 2 == 0;
+  scene.TwoSided = index % 5 != 0;
+  scene.SmoothTerminator = index % 7 == 3;
+  const int lights = 1 + index % 4;
+  for (int i = 0; i < lights; ++i)
+  {
+    Scene::Light light;
+    light.ToLightMC = RandomDirection(random);
+    light.Diffuse = uniform(random);
+    light.Specular = uniform(random);
+    scene.Lights.push_back(light);
+  }
+  scene.ToEyeMC = RandomDirection(random);
+  const double distance = 2.0 + 6.0 * uniform(random);
+  for (int i = 0; i < 3; ++i)
+  {
+    scene.EyeMC[i] = distance * scene.ToEyeMC[i];
+  }
+  if (index % 3 == 0) // a headlight: L = V, where the highlight faces the eye
+  {
+    scene.Lights[0].ToLightMC = scene.ToEyeMC;
+  }
+  return scene;
+}
+
+// The lobe bound alone: normals in a random cap of radius R around an axis at a random
+// angle from a fixed H; G and F compared over a grid; every case within LobeBound.
+bool CheckLobeBound(std::mt19937& random, double& tightest)
+{
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const double exponents[] = { 1.0, 8.0, 40.0, 128.0, 1.0e3, 1.0e4 };
+  bool ok = true;
+  for (int trial = 0; trial < 6000; ++trial)
+  {
+    const double n = exponents[trial % 6];
+    const double spread = 0.002 + 0.2 * uniform(random) * uniform(random);
+    const Vector h = { { 0.0, 0.0, 1.0 } };
+    const double offset = (spread + 3.0 / std::sqrt(n)) * uniform(random);
+    const Vector axis = { { std::sin(offset), 0.0, std::cos(offset) } };
+    // Three normals in the cap: the axis turned by up to `spread` in random directions.
+    Vector normals[3];
+    for (auto& normal : normals)
+    {
+      const double turn = spread * std::sqrt(uniform(random));
+      const double around = 6.283185307179586 * uniform(random);
+      const Vector u = { { std::cos(offset), 0.0, -std::sin(offset) } }, w = { { 0.0, 1.0, 0.0 } };
+      for (int c = 0; c < 3; ++c)
+      {
+        normal[c] = std::cos(turn) * axis[c] +
+          std::sin(turn) * (std::cos(around) * u[c] + std::sin(around) * w[c]);
+      }
+    }
+    auto lobe = [&](const Vector& m) { return std::pow(std::max(Dot(Unit(m), h), 0.0), n); };
+    double largest = 0.0;
+    for (int i = 0; i <= 12; ++i)
+    {
+      for (int j = 0; i + j <= 12; ++j)
+      {
+        const double b[3] = { i / 12.0, j / 12.0, (12 - i - j) / 12.0 };
+        Vector m{};
+        double vertex = 0.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          vertex += b[k] * lobe(normals[k]);
+          for (int c = 0; c < 3; ++c)
+          {
+            m[c] += b[k] * normals[k][c];
+          }
+        }
+        largest = std::max(largest, std::abs(vertex - lobe(m)));
+      }
+    }
+    const double bound = vtkPhongGouraudBound::LobeBound(
+      spread, std::max(offset - spread, 0.0), offset + spread, n);
+    const double nearest = std::max(offset - spread, 0.0);
+    const double largestLobe = nearest >= 1.5707963267948966 ? 0.0 : std::pow(std::cos(nearest), n);
+    const double used = std::min(bound, largestLobe);
+    if (largest > used * (1.0 + 1.0e-9) + 1.0e-15)
+    {
+      std::cerr << "lobe bound broken: n " << n << " spread " << spread << " offset " << offset
+                << ": " << largest << " > " << used << "\n";
+      ok = false;
+    }
+    if (used > 1.0e-6)
+    {
+      tightest = std::max(tightest, largest / used);
+    }
+  }
+  return ok;
+}
+}
+
+int TestPhongGouraudBound(int, char*[])
+{
+  std::mt19937 random(20261127);
+  bool ok = true;
+  double tightestLobe = 0.0;
+  ok = CheckLobeBound(random, tightestLobe) && ok;
+  std::cout << "lobe bound: 6000 caps, largest actual/bound " << tightestLobe << "\n";
+
+  int bounded = 0, total = 0;
+  double tightest = 0.0;
+  for (int kind = 0; kind < 3; ++kind)
+  {
+    auto mesh = MakeMesh(kind, random);
+    vtkPhongGouraudBound bound;
+    bound.Update({ mesh.GetPointer() }, 1);
+    for (int index = 0; index < 24; ++index)
+    {
+      const Scene scene = RandomScene(random, index);
+      const double limit = bound.Bound(scene);
+      const double actual = BruteForce(mesh, scene);
+      ++total;
+      if (!std::isfinite(limit))
+      {
+        continue;
+      }
+      ++bounded;
+      tightest = std::max(tightest, actual / std::max(limit, 1.0e-300));
+      if (actual > limit * (1.0 + 1.0e-9) + 1.0e-12)
+      {
+        std::cerr << "bound broken: mesh " << kind << " scene " << index << " n "
+                  << scene.Shininess << (scene.Blinn ? " Blinn" : " Phong")
+                  << (scene.Parallel ? " parallel" : " perspective") << ": actual " << actual
+                  << " > bound " << limit << "\n";
+        ok = false;
+      }
+    }
+  }
+  std::cout << "meshes: " << bounded << " of " << total
+            << " scenes bounded, largest actual/bound " << tightest << "\n";
+  if (bounded < total * 3 / 4)
+  {
+    std::cerr << "too few scenes bounded: " << bounded << " of " << total << "\n";
+    ok = false;
+  }
+  // A surface the bound cannot cover says so.
+  vtkNew<vtkPolyData> empty;
+  vtkPhongGouraudBound none;
+  none.Update({ empty.GetPointer() }, 1);
+  if (std::isfinite(none.Bound(Scene())))
+  {
+    std::cerr << "a surface without normals was bounded\n";
+    ok = false;
+  }
+  return ok ? 0 : 1;
+}

@@ -1,0 +1,214 @@
+#include "vtkPhongErrorBudget.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPhongLightCulling.h"
+#include "vtkPhongLightGeometry.h"
+#include "vtkPhongMaterial.h"
+#include "vtkPhongProblemLog.h"
+#include "vtkPhongProperty.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+using Vector = std::array<double, 3>;
+
+// A light value as the uniforms upload it: finite, >= 0 and at most LargestValue.
+double Uploaded(double color, double intensity)
+{
+  auto sane = [](double v) { return (v >= 0.0 && std::isfinite(v)) ? v : 0.0; };
+  return std::min(sane(color) * sane(intensity), vtkPhongProblemLog::LargestValue);
+}
+
+// The largest over channels of weight[c] * colour[c] * intensity.
+double Strength(const double weight[3], const double* color, double intensity)
+{
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    largest = std::max(largest, weight[c] * Uploaded(color[c], intensity));
+  }
+  return largest;
+}
+
+// The model-to-view matrix's linear part A, or false when it does not keep angles (A^T A is
+// not s^2 I to 1e-6): per-vertex bounds are in the angles of the model's normals.
+bool SimilarityToView(vtkRenderer* ren, vtkActor* actor, vtkMatrix4x4* modelToView)
+{
+  vtkMatrix4x4::Multiply4x4(
+    ren->GetActiveCamera()->GetModelViewTransformMatrix(), actor->GetMatrix(), modelToView);
+  double gram[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      gram[i][j] = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        gram[i][j] += modelToView->GetElement(k, i) * modelToView->GetElement(k, j);
+      }
+    }
+  }
+  const double scale = gram[0][0];
+  if (!(scale > 0.0) || !std::isfinite(scale))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      if (std::abs(gram[i][j] - (i == j ? scale : 0.0)) > 1.0e-6 * scale)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// A view-coordinate direction in model coordinates (A^-1 v, unit): the dot products with
+// the model's normals keep their angles under a similarity.
+Vector ToModel(vtkMatrix4x4* viewToModel, const double directionVC[3])
+{
+  Vector v;
+  for (int i = 0; i < 3; ++i)
+  {
+    v[i] = viewToModel->GetElement(i, 0) * directionVC[0] +
+      viewToModel->GetElement(i, 1) * directionVC[1] +
+      viewToModel->GetElement(i, 2) * directionVC[2];
+  }
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (double& component : v)
+  {
+    component /= length;
+  }
+  return v;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongErrorBudget::ChoosePerVertex(vtkRenderer* ren, vtkActor* actor,
+  const vtkPhongShaderPlan& plan, const vtkPhongGouraudBound& triangles, double available,
+  bool wasPerVertex, double& bound)
+{
+  bound = VTK_DOUBLE_MAX;
+  vtkPhongGouraudBound::Scene scene;
+  if (!plan.PointLights.empty() || !plan.SpotLights.empty() ||
+    !MakeScene(ren, actor, plan, scene) ||
+    !PerVertexIsCheaper(ren, actor, triangles, scene.TwoSided))
+  {
+    return false;
+  }
+  bound = triangles.Bound(scene);
+  const double share = available - FloatMargin(scene);
+  return bound <= (wasPerVertex ? 1.0 : 0.8) * share;
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongErrorBudget::FloatMargin(const vtkPhongGouraudBound::Scene& scene)
+{
+  double largest = 0.0;
+  for (const auto& light : scene.Lights)
+  {
+    largest += light.Diffuse + light.Specular;
+  }
+  return 0.01 / 255.0 + 2.0e-5 * largest;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongErrorBudget::MakeScene(vtkRenderer* ren, vtkActor* actor,
+  const vtkPhongShaderPlan& plan, vtkPhongGouraudBound::Scene& scene)
+{
+  vtkProperty* front = plan.FrontMaterial;
+  vtkProperty* back = plan.BackMaterial;
+  const double shininess = vtkPhongMaterial::ShininessOf(front);
+  vtkNew<vtkMatrix4x4> modelToView, viewToModel;
+  if (shininess != vtkPhongMaterial::ShininessOf(back) ||
+    !SimilarityToView(ren, actor, modelToView))
+  {
+    return false;
+  }
+  vtkMatrix4x4::Invert(modelToView, viewToModel);
+  const int model = vtkPhongMaterial::LightingModelOf(front);
+  scene.Shininess = shininess;
+  scene.Blinn =
+    model == vtkPhongProperty::BlinnPhong || model == vtkPhongProperty::NormalizedBlinnPhong;
+  auto* phongFront = vtkPhongProperty::SafeDownCast(front);
+  scene.SmoothTerminator = phongFront && phongFront->GetSmoothTerminator();
+  scene.TwoSided = ren->GetTwoSidedLighting() != 0;
+  vtkCamera* camera = ren->GetActiveCamera();
+  scene.Parallel = camera->GetParallelProjection() != 0;
+  const double toEyeVC[3] = { 0.0, 0.0, 1.0 };
+  scene.ToEyeMC = ToModel(viewToModel, toEyeVC);
+  const double eye[4] = { 0.0, 0.0, 0.0, 1.0 };
+  double eyeMC[4];
+  viewToModel->MultiplyPoint(eye, eyeMC);
+  for (int i = 0; i < 3; ++i)
+  {
+    scene.EyeMC[i] = eyeMC[i] / eyeMC[3];
+  }
+
+  double weights[3][3];
+  vtkPhongLightCulling::MaterialWeights(front, back, weights);
+  for (vtkLight* light : plan.DirectionalLights)
+  {
+    const vtkPhongLightGeometry geometry = vtkPhongLightGeometry::InView(light, ren);
+    const double toLightVC[3] = { -geometry.DirectionVC[0], -geometry.DirectionVC[1],
+      -geometry.DirectionVC[2] };
+    vtkPhongGouraudBound::Scene::Light bounded;
+    bounded.ToLightMC = ToModel(viewToModel, toLightVC);
+    bounded.Diffuse = Strength(weights[1], light->GetDiffuseColor(), light->GetIntensity());
+    bounded.Specular = Strength(weights[2], light->GetSpecularColor(), light->GetIntensity());
+    scene.Lights.push_back(bounded);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Per-vertex lighting costs vertices x sides x lights, per-fragment lighting fragments x
+// lights; a vertex-light-side is taken to cost twice a fragment-light (an estimate: the
+// crossover near 2 pixels a triangle). The fragments are taken as the screen area of the
+// actor's bounding sphere, within the viewport, so sub-pixel meshes stay per fragment.
+bool vtkPhongErrorBudget::PerVertexIsCheaper(
+  vtkRenderer* ren, vtkActor* actor, const vtkPhongGouraudBound& triangles, bool twoSided)
+{
+  const double* bounds = actor->GetBounds();
+  vtkCamera* camera = ren->GetActiveCamera();
+  int* size = ren->GetSize();
+  if (!bounds || !vtkMath::AreBoundsInitialized(bounds) || size[1] <= 0)
+  {
+    return false;
+  }
+  double centre[3], radius = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    centre[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+    radius += 0.25 * (bounds[2 * i + 1] - bounds[2 * i]) * (bounds[2 * i + 1] - bounds[2 * i]);
+  }
+  radius = std::sqrt(radius);
+  double halfHeight = camera->GetParallelScale(); // world units over half the viewport
+  if (!camera->GetParallelProjection())
+  {
+    const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(centre, camera->GetPosition()));
+    halfHeight = distance * std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle()));
+  }
+  if (!(halfHeight > 0.0))
+  {
+    return false;
+  }
+  const double radiusPixels = radius / halfHeight * 0.5 * size[1];
+  const double fragments =
+    std::min(vtkMath::Pi() * radiusPixels * radiusPixels, double(size[0]) * double(size[1]));
+  const double vertexWork = 2.0 * static_cast<double>(triangles.GetNumberOfPoints()) * (twoSided ? 2.0 : 1.0);
+  return vertexWork <= fragments;
+}

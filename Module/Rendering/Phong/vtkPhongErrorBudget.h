@@ -1,0 +1,52 @@
+/**
+ * @class   vtkPhongErrorBudget
+ * @brief   how a primitive spends the user's error budget (private)
+ *
+ * Called by vtkPhongShaderPlanner under vtkPhongLightingSettings::ErrorBudget. The budget
+ * is the largest difference per pixel and channel (linear colour) allowed between the
+ * picture and the exact per-fragment model computed in double. It pays, in this order:
+ * - light culling, at most half of the budget (and never more than LightCullingBound);
+ * - per-vertex lighting of the surface (vtkPhongGouraudBound), with what is left less the
+ *   float rounding of the lighting itself, while
+ *   the surface's vertices are fewer than the fragments it covers (ChoosePerVertex).
+ * The errors of the mechanisms add up by the triangle inequality, so the picture stays
+ * within their sum. Hysteresis is on the safe side only: the planner goes per vertex when
+ * the bound is at most 0.8 of what is left, stays while it fits, and goes back at once when
+ * it does not.
+ */
+
+#ifndef vtkPhongErrorBudget_h
+#define vtkPhongErrorBudget_h
+
+#include "vtkPhongGouraudBound.h" // for vtkPhongGouraudBound::Scene
+#include "vtkPhongShaderPlan.h"    // for vtkPhongShaderPlan
+
+class vtkActor;
+class vtkRenderer;
+
+class vtkPhongErrorBudget
+{
+public:
+  /**
+   * Whether the plan's light sums may be evaluated per vertex within `available` (linear
+   * colour), given the primitive's binned triangles and `wasPerVertex`, the last choice;
+   * `bound` receives the bound of per-vertex lighting (+inf when it cannot be bounded).
+   */
+  static bool ChoosePerVertex(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
+    const vtkPhongGouraudBound& triangles, double available, bool wasPerVertex, double& bound);
+
+private:
+  // The rounding of float lighting against the double model, taken off what per-vertex
+  // lighting may spend: 0.01 level plus 2e-5 of the lights' largest contributions.
+  static double FloatMargin(const vtkPhongGouraudBound::Scene& scene);
+  // The directional lights, the view and the material in the model coordinates of the
+  // normals; false when the actor's matrix is not a similarity (angles would not hold).
+  static bool MakeScene(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
+    vtkPhongGouraudBound::Scene& scene);
+  // Whether per-vertex lighting costs less: vertices x sides against the covered fragments.
+  static bool PerVertexIsCheaper(
+    vtkRenderer* ren, vtkActor* actor, const vtkPhongGouraudBound& triangles, bool twoSided);
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkPhongErrorBudget.h

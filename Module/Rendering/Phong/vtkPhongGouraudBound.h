@@ -1,0 +1,132 @@
+/**
+ * @class   vtkPhongGouraudBound
+ * @brief   a proven bound on how far per-vertex lighting strays from per-fragment lighting
+ * (private)
+ *
+ * Under an error budget (vtkPhongLightingSettings::ErrorBudget) the planner may light a
+ * surface at its vertices and interpolate (VTK's true Gouraud) instead of at every fragment,
+ * which on fine meshes costs a fraction of the per-fragment lighting. It does so only where
+ * this bound, on the largest difference per pixel and channel between the two, fits the
+ * budget. docs/lighting-model.md ("Error budget") has the derivation; in short:
+ *
+ * For one triangle whose unit vertex normals lie in a cap of angular radius R, and one
+ * directional light, the per-vertex value G(b) = sum b_i s(n_i.H) and the per-fragment value
+ * F(b) = s(N(b).H), N(b) the normalized interpolated normal, differ by at most (Waldron's
+ * identity for the degree-0 homogeneous function s(H.m/|m|))
+ *
+ *     E(R) = tan^2(R)/2 * (Hs + 2 G1 (1 - cos R cos 2R) / sin R)
+ *
+ * with Hs = sup |d2 s/d alpha2| + sup |s'(c) c| and G1 = sup s'(c) sin(alpha) over the
+ * angles alpha between H and the normals of the cap. Both values lie in [0, sup s], so
+ * sup s bounds the difference too (the only bound where a lobe's clamp or the specular gate
+ * crosses the triangle). The Phong lobe takes the reflected vector's cap (2R); the diffuse
+ * term is the case s(c) = max(c, 0), n = 1.
+ *
+ * Update() bins the triangles once per upload by the direction of their normal cap (a cube
+ * map of 6 x 8 x 8 cells), keeping per cell the cone of cap axes, the largest cap radius and
+ * the largest triangle radius; Bound() then costs cells x lights per frame and bounds every
+ * triangle of a cell at once (the cell's angles widen by its cone). Only directional lights
+ * are bounded; a perspective view adds the view vector's spread over a triangle (first
+ * order, with a margin of 1.1 checked by brute force in TestPhongGouraudBound).
+ */
+
+#ifndef vtkPhongGouraudBound_h
+#define vtkPhongGouraudBound_h
+
+#include "vtkType.h" // for vtkMTimeType
+
+#include <array>  // for std::array
+#include <vector> // for std::vector
+
+class vtkDataArray;
+class vtkIdList;
+class vtkPoints;
+class vtkPolyData;
+
+class vtkPhongGouraudBound
+{
+public:
+  /// What lights the surface, in the model coordinates of its normals (unit vectors).
+  struct Scene
+  {
+    struct Light
+    {
+      std::array<double, 3> ToLightMC; ///< L, from the surface towards the light
+      double Diffuse = 0.0;            ///< kd*Cd*Ld*I, the largest over channels and sides
+      double Specular = 0.0;           ///< ks*Cs*Ls*I*normalization, likewise
+    };
+    std::vector<Light> Lights;
+    bool Parallel = true;
+    std::array<double, 3> ToEyeMC = { { 0.0, 0.0, 1.0 } }; ///< V, parallel projection
+    std::array<double, 3> EyeMC = { { 0.0, 0.0, 0.0 } };   ///< the eye, perspective
+    double Shininess = 1.0;
+    bool Blinn = true;
+    bool TwoSided = true;          ///< back faces lit with the reversed normals
+    bool SmoothTerminator = false; ///< the lobe times max(N.L, 0) instead of the gate
+  };
+
+  /**
+   * Bin the triangles of `blocks` (their polygons, fan-triangulated as VTK draws them, and
+   * point normals) unless done for `buildTime` already. Without point normals, or with
+   * normals that are not unit-length usable vectors, the surface is unbounded.
+   */
+  void Update(const std::vector<vtkPolyData*>& blocks, vtkMTimeType buildTime);
+
+  /**
+   * The largest difference per pixel and channel (linear colour) between per-vertex and
+   * per-fragment lighting of the binned triangles in `scene`; +inf when it cannot be bounded.
+   */
+  double Bound(const Scene& scene) const;
+
+  /**
+   * The bound E above for one cap: `spread` its angular radius, [near, far] the range of
+   * angles between the lobe's axis and the normals of the cap (radians), `n` the exponent of
+   * s(c) = max(c, 0)^n. Where the cap reaches c = 0 with n < 2 the clamp is not smooth: for
+   * n = 1 (the diffuse term) its kink adds sin(R)/2, otherwise the bound is +inf (callers
+   * take sup s instead). Public for tests.
+   */
+  static double LobeBound(double spread, double nearAngle, double farAngle, double n);
+
+  /// Triangles binned; 0 when nothing was or the surface is unbounded.
+  std::size_t GetNumberOfTriangles() const { return this->Triangles; }
+
+  /// Points of the binned blocks (the vertices per-vertex lighting would light).
+  std::size_t GetNumberOfPoints() const { return this->Points; }
+
+  /// Whether the planner chose per-vertex lighting last time (its hysteresis).
+  bool ChosePerVertex = false;
+
+private:
+  using Vector = std::array<double, 3>;
+  struct Cell
+  {
+    Vector Axis = { { 0.0, 0.0, 0.0 } }; ///< the cell's centre direction
+    double Cone = 0.0;                   ///< largest angle to a cap axis
+    double Spread = 0.0;                 ///< largest cap radius
+    double Radius = 0.0;                 ///< largest triangle radius
+    std::size_t Count = 0;
+  };
+  /// The view vector over the whole surface: a cone, and the eye's least distance.
+  struct View
+  {
+    Vector Centre = { { 0.0, 0.0, 1.0 } };
+    double Spread = 0.0;
+    double Nearest = 0.0;
+  };
+  bool MakeView(const Scene& scene, View& view) const;
+  double CellBound(const Cell& cell, const Scene& scene, const View& view, double side) const;
+  static double DiffuseBound(double spread, double nearLight, double farLight);
+  double SpecularBound(const Cell& cell, const Scene& scene, const View& view, const Vector& d,
+    const Vector& toLight, double localView, double farLight) const;
+  void AddPolygon(vtkIdList* ids, vtkPoints* points, vtkDataArray* normals, double box[6]);
+
+  std::vector<Cell> Cells;
+  std::array<double, 4> Sphere = { { 0.0, 0.0, 0.0, 0.0 } }; ///< the points' bounding sphere
+  std::size_t Triangles = 0;
+  std::size_t Points = 0;
+  bool Unbounded = true;
+  vtkMTimeType BuildTime = 0;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkPhongGouraudBound.h
