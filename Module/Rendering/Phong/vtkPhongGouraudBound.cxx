@@ -1,12 +1,14 @@
 #include "vtkPhongGouraudBound.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -164,9 +166,11 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
       break;
     }
     this->Points += static_cast<std::size_t>(points->GetNumberOfPoints());
-    vtkCellArray* polys = block->GetPolys();
-    for (polys->InitTraversal(); polys->GetNextCell(ids) && !this->Unbounded;)
+    auto polys = vtk::TakeSmartPointer(block->GetPolys()->NewIterator());
+    for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal() && !this->Unbounded;
+         polys->GoToNextCell())
     {
+      polys->GetCurrentCell(ids);
       this->AddPolygon(ids, points, normals, box);
     }
   }

@@ -5,6 +5,8 @@
 // random caps of normals around random halfway vectors. Prints how tight the bounds are.
 #include "vtkPhongGouraudBound.h"
 
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
@@ -90,9 +92,10 @@ double BruteForce(vtkPolyData* mesh, const Scene& scene)
   vtkDataArray* normals = mesh->GetPointData()->GetNormals();
   vtkNew<vtkIdList> ids;
   double largest = 0.0;
-  vtkCellArray* polys = mesh->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
   {
+    polys->GetCurrentCell(ids);
     for (vtkIdType t = 1; t + 1 < ids->GetNumberOfIds(); ++t)
     {
       const vtkIdType corner[3] = { ids->GetId(0), ids->GetId(t), ids->GetId(t + 1) };
