@@ -1,6 +1,7 @@
 #include "vtkPhongErrorBudget.h"
 
 #include "vtkActor.h"
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -10,7 +11,6 @@
 #include "vtkPhongLightCulling.h"
 #include "vtkPhongLightGeometry.h"
 #include "vtkPhongMaterial.h"
-#include "vtkPhongProblemLog.h"
 #include "vtkPhongProperty.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -22,20 +22,14 @@ namespace
 {
 using Vector = std::array<double, 3>;
 
-// A light value as the uniforms upload it: finite, >= 0 and at most LargestValue.
-double Uploaded(double color, double intensity)
-{
-  auto sane = [](double v) { return (v >= 0.0 && std::isfinite(v)) ? v : 0.0; };
-  return std::min(sane(color) * sane(intensity), vtkPhongProblemLog::LargestValue);
-}
-
 // The largest over channels of weight[c] * colour[c] * intensity.
 double Strength(const double weight[3], const double* color, double intensity)
 {
   double largest = 0.0;
   for (int c = 0; c < 3; ++c)
   {
-    largest = std::max(largest, weight[c] * Uploaded(color[c], intensity));
+    largest =
+      std::max(largest, weight[c] * vtkPhongLightGeometry::UploadedColor(color[c], intensity));
   }
   return largest;
 }
@@ -189,17 +183,15 @@ bool vtkPhongErrorBudget::PerVertexIsCheaper(
   {
     return false;
   }
-  double centre[3], radius = 0.0;
-  for (int i = 0; i < 3; ++i)
-  {
-    centre[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
-    radius += 0.25 * (bounds[2 * i + 1] - bounds[2 * i]) * (bounds[2 * i + 1] - bounds[2 * i]);
-  }
-  radius = std::sqrt(radius);
+  const vtkBoundingBox box(bounds);
+  double centre[3];
+  box.GetCenter(centre);
+  const double radius = 0.5 * box.GetDiagonalLength();
   double halfHeight = camera->GetParallelScale(); // world units over half the viewport
   if (!camera->GetParallelProjection())
   {
-    const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(centre, camera->GetPosition()));
+    const double distance =
+      std::sqrt(vtkMath::Distance2BetweenPoints(centre, camera->GetPosition()));
     halfHeight = distance * std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle()));
   }
   if (!(halfHeight > 0.0))
@@ -209,6 +201,7 @@ bool vtkPhongErrorBudget::PerVertexIsCheaper(
   const double radiusPixels = radius / halfHeight * 0.5 * size[1];
   const double fragments =
     std::min(vtkMath::Pi() * radiusPixels * radiusPixels, double(size[0]) * double(size[1]));
-  const double vertexWork = 2.0 * static_cast<double>(triangles.GetNumberOfPoints()) * (twoSided ? 2.0 : 1.0);
+  const double vertexWork =
+    2.0 * static_cast<double>(triangles.GetNumberOfPoints()) * (twoSided ? 2.0 : 1.0);
   return vertexWork <= fragments;
 }

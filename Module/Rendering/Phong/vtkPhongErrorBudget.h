@@ -19,7 +19,7 @@
 #define vtkPhongErrorBudget_h
 
 #include "vtkPhongGouraudBound.h" // for vtkPhongGouraudBound::Scene
-#include "vtkPhongShaderPlan.h"    // for vtkPhongShaderPlan
+#include "vtkPhongShaderPlan.h"   // for vtkPhongShaderPlan
 
 class vtkActor;
 class vtkRenderer;

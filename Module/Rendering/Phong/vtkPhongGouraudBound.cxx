@@ -1,10 +1,9 @@
 #include "vtkPhongGouraudBound.h"
 
+#include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
-#include "vtkIdList.h"
-#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -41,6 +40,19 @@ double Angle(const Vector& a, const Vector& b)
   const Vector difference = { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
   const Vector sum = { { a[0] + b[0], a[1] + b[1], a[2] + b[2] } };
   return 2.0 * std::atan2(Norm(difference), Norm(sum));
+}
+
+double SquaredDistance(const Vector& a, const Vector& b)
+{
+  const Vector difference = { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
+  return Dot(difference, difference);
+}
+
+// The angle between unit vectors whose chord has this squared length: the largest angle is
+// the longest chord's, so binning compares chords and takes one arcsine per cell at the end.
+double ChordAngle(double squaredChord)
+{
+  return 2.0 * std::asin(std::min(1.0, 0.5 * std::sqrt(squaredChord)));
 }
 
 bool Normalize(Vector& a)
@@ -126,15 +138,15 @@ double vtkPhongGouraudBound::LobeBound(double spread, double nearAngle, double f
   {
     return Infinite;
   }
-  // d2/dalpha2 cos^n = n(n-1) cos^(n-2) sin^2 - n cos^n; s'(c) c = n cos^n; s'(c) sin = n cos^(n-1) sin.
+  // d2/dalpha2 cos^n = n(n-1) cos^(n-2) sin^2 - n cos^n; s'(c) c = n cos^n;
+  // s'(c) sin = n cos^(n-1) sin.
   const double curvature = n * std::abs(n - 1.0); // 0 for the diffuse term's n = 1
   const double hs = (curvature > 0.0 ? curvature * SupCosSin(n - 2.0, 2, a, b) : 0.0) +
     n * std::pow(std::cos(a), n);
   const double g1 = n * SupCosSin(n - 1.0, 1, a, b);
   const double tangent = std::tan(spread);
   const double radial = (1.0 - std::cos(spread) * std::cos(2.0 * spread)) / std::sin(spread);
-  return 0.5 * tangent * tangent * (hs + 2.0 * g1 * radial) +
-    (kink ? 0.5 * std::sin(spread) : 0.0);
+  return 0.5 * tangent * tangent * (hs + 2.0 * g1 * radial) + (kink ? 0.5 * std::sin(spread) : 0.0);
 }
 
 //------------------------------------------------------------------------------
@@ -153,8 +165,7 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
   this->Triangles = 0;
   this->Points = 0;
   this->Unbounded = false;
-  double box[6] = { Infinite, -Infinite, Infinite, -Infinite, Infinite, -Infinite };
-  vtkNew<vtkIdList> ids;
+  vtkBoundingBox box;
   for (vtkPolyData* block : blocks)
   {
     vtkDataArray* normals = block->GetPointData()->GetNormals();
@@ -170,14 +181,20 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
     for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal() && !this->Unbounded;
          polys->GoToNextCell())
     {
-      polys->GetCurrentCell(ids);
-      this->AddPolygon(ids, points, normals, box);
+      vtkIdType count;
+      const vtkIdType* ids;
+      polys->GetCurrentCell(count, ids);
+      this->AddPolygon(count, ids, points, normals, box);
     }
   }
-  Vector halfDiagonal = { { 0.5 * (box[1] - box[0]), 0.5 * (box[3] - box[2]),
-    0.5 * (box[5] - box[4]) } };
-  this->Sphere = { { 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), 0.5 * (box[4] + box[5]),
-    Norm(halfDiagonal) } };
+  for (Cell& cell : this->Cells)
+  {
+    cell.Cone = ChordAngle(cell.Cone);
+    cell.Spread = ChordAngle(cell.Spread);
+    cell.Radius = std::sqrt(cell.Radius);
+  }
+  box.GetCenter(this->Sphere.data());
+  this->Sphere[3] = box.IsValid() ? 0.5 * box.GetDiagonalLength() : 0.0;
   if (this->Unbounded)
   {
     this->Triangles = 0;
@@ -186,32 +203,35 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
 
 //------------------------------------------------------------------------------
 // One polygon as one cap: the cap of all its normals contains each triangle's that VTK cuts
-// it into, and the ball around its points each triangle's ball.
-void vtkPhongGouraudBound::AddPolygon(
-  vtkIdList* ids, vtkPoints* points, vtkDataArray* normals, double box[6])
+// it into, and the ball around its points each triangle's ball. The cell keeps squares while
+// binning (of the chords for its cone and spread, of the radius), Update their roots.
+void vtkPhongGouraudBound::AddPolygon(vtkIdType count, const vtkIdType* ids, vtkPoints* points,
+  vtkDataArray* normals, vtkBoundingBox& box)
 {
-  const vtkIdType count = ids->GetNumberOfIds();
   if (count < 3)
   {
     return;
   }
-  std::vector<Vector> unit(count), position(count);
+  // Reused from polygon to polygon: an allocation each would cost more than the rest.
+  std::vector<Vector>& unit = this->CornerNormals;
+  std::vector<Vector>& position = this->CornerPositions;
+  unit.resize(count);
+  position.resize(count);
   Vector axis = { { 0.0, 0.0, 0.0 } }, centroid = { { 0.0, 0.0, 0.0 } };
   for (vtkIdType i = 0; i < count; ++i)
   {
-    normals->GetTuple(ids->GetId(i), unit[i].data());
-    points->GetPoint(ids->GetId(i), position[i].data());
+    normals->GetTuple(ids[i], unit[i].data());
+    points->GetPoint(ids[i], position[i].data());
     if (!Normalize(unit[i]))
     {
       this->Unbounded = true; // lit as N = V per vertex, by the face per fragment
       return;
     }
+    box.AddPoint(position[i].data());
     for (int k = 0; k < 3; ++k)
     {
       axis[k] += unit[i][k];
       centroid[k] += position[i][k] / count;
-      box[2 * k] = std::min(box[2 * k], position[i][k]);
-      box[2 * k + 1] = std::max(box[2 * k + 1], position[i][k]);
     }
   }
   if (!Normalize(axis))
@@ -219,18 +239,13 @@ void vtkPhongGouraudBound::AddPolygon(
     this->Unbounded = true; // normals that cancel out
     return;
   }
-  double spread = 0.0, radius = 0.0;
+  Cell& cell = this->Cells[CellIndex(axis)];
+  cell.Cone = std::max(cell.Cone, SquaredDistance(cell.Axis, axis));
   for (vtkIdType i = 0; i < count; ++i)
   {
-    spread = std::max(spread, Angle(axis, unit[i]));
-    const Vector offset = { { position[i][0] - centroid[0], position[i][1] - centroid[1],
-      position[i][2] - centroid[2] } };
-    radius = std::max(radius, Norm(offset));
+    cell.Spread = std::max(cell.Spread, SquaredDistance(axis, unit[i]));
+    cell.Radius = std::max(cell.Radius, SquaredDistance(position[i], centroid));
   }
-  Cell& cell = this->Cells[CellIndex(axis)];
-  cell.Cone = std::max(cell.Cone, Angle(cell.Axis, axis));
-  cell.Spread = std::max(cell.Spread, spread);
-  cell.Radius = std::max(cell.Radius, radius);
   ++cell.Count;
   ++this->Triangles;
 }
@@ -247,6 +262,11 @@ double vtkPhongGouraudBound::Bound(const Scene& scene) const
   {
     return Infinite;
   }
+  std::vector<Halfway> halfways;
+  for (const Scene::Light& light : scene.Lights)
+  {
+    halfways.push_back(MakeHalfway(scene, view, light.ToLightMC));
+  }
   double largest = 0.0;
   for (const Cell& cell : this->Cells)
   {
@@ -254,13 +274,35 @@ double vtkPhongGouraudBound::Bound(const Scene& scene) const
     {
       continue;
     }
-    largest = std::max(largest, this->CellBound(cell, scene, view, 1.0));
+    largest = std::max(largest, CellBound(cell, scene, view, halfways, 1.0));
     if (scene.TwoSided)
     {
-      largest = std::max(largest, this->CellBound(cell, scene, view, -1.0));
+      largest = std::max(largest, CellBound(cell, scene, view, halfways, -1.0));
     }
   }
   return largest;
+}
+
+//------------------------------------------------------------------------------
+// Blinn's halfway vector between a light and the view cone's centre, and |L + V| at its least
+// over the cone: the same for every cell, so made once per light.
+vtkPhongGouraudBound::Halfway vtkPhongGouraudBound::MakeHalfway(
+  const Scene& scene, const View& view, const Vector& toLight)
+{
+  Halfway halfway;
+  if (!scene.Blinn)
+  {
+    return halfway;
+  }
+  halfway.Least = 2.0 * std::cos(0.5 * std::min(Angle(toLight, view.Centre) + view.Spread, Pi));
+  halfway.Direction = { { toLight[0] + view.Centre[0], toLight[1] + view.Centre[1],
+    toLight[2] + view.Centre[2] } };
+  const bool opposite = !Normalize(halfway.Direction);
+  halfway.LobeZero = scene.Parallel && opposite; // L = -V everywhere: the lobe is 0
+  // H turns without bound as V does.
+  halfway.Unbounded =
+    !halfway.LobeZero && (opposite || (!scene.Parallel && !(halfway.Least > 1.0e-3)));
+  return halfway;
 }
 
 //------------------------------------------------------------------------------
@@ -290,8 +332,8 @@ bool vtkPhongGouraudBound::MakeView(const Scene& scene, View& view) const
 
 //------------------------------------------------------------------------------
 // Every triangle of the cell, on one side (1: as is; -1: reversed, two-sided back faces).
-double vtkPhongGouraudBound::CellBound(
-  const Cell& cell, const Scene& scene, const View& view, double side) const
+double vtkPhongGouraudBound::CellBound(const Cell& cell, const Scene& scene, const View& view,
+  const std::vector<Halfway>& halfways, double side)
 {
   const Vector d = { { side * cell.Axis[0], side * cell.Axis[1], side * cell.Axis[2] } };
   const double width = cell.Cone + cell.Spread; // normals' angles around d
@@ -300,8 +342,9 @@ double vtkPhongGouraudBound::CellBound(
     : cell.Radius < view.Nearest          ? std::asin(cell.Radius / view.Nearest)
                                           : Infinite;
   double sum = 0.0;
-  for (const Scene::Light& light : scene.Lights)
+  for (std::size_t i = 0; i < scene.Lights.size(); ++i)
   {
+    const Scene::Light& light = scene.Lights[i];
     const double toLight = Angle(d, light.ToLightMC);
     const double nearLight = std::max(toLight - width, 0.0);
     const double farLight = std::min(toLight + width, Pi);
@@ -309,11 +352,11 @@ double vtkPhongGouraudBound::CellBound(
     {
       continue; // every normal faces away: no diffuse, the specular gate shut
     }
-    sum += light.Diffuse * this->DiffuseBound(cell.Spread, nearLight, farLight);
+    sum += light.Diffuse * DiffuseBound(cell.Spread, nearLight, farLight);
     if (light.Specular > 0.0)
     {
       sum += light.Specular *
-        this->SpecularBound(cell, scene, view, d, light.ToLightMC, localView, farLight);
+        SpecularBound(cell, scene, view, d, light.ToLightMC, halfways[i], localView, farLight);
     }
   }
   return sum >= 0.0 ? sum : Infinite; // NaN, from a degenerate input, bounds nothing
@@ -328,32 +371,22 @@ double vtkPhongGouraudBound::DiffuseBound(double spread, double nearLight, doubl
 }
 
 //------------------------------------------------------------------------------
-double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
-  const View& view, const Vector& d, const Vector& toLight, double localView,
-  double farLight) const
+double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene, const View& view,
+  const Vector& d, const Vector& toLight, const Halfway& halfway, double localView, double farLight)
 {
   // The lobe's axis against the cell's normals: Blinn's H against N, or Phong's reflected
   // vector (which turns twice as far as N) against V.
   double centre, width, spread, scale = 1.0;
   const double n = scene.Shininess;
-  const double halfway = 2.0 * std::cos(0.5 * std::min(Angle(toLight, view.Centre) + view.Spread,
-                                           Pi)); // |L + V| at its least
   if (scene.Blinn)
   {
-    Vector h = { { toLight[0] + view.Centre[0], toLight[1] + view.Centre[1],
-      toLight[2] + view.Centre[2] } };
-    const bool opposite = !Normalize(h);
-    if (scene.Parallel && opposite)
+    if (halfway.LobeZero || halfway.Unbounded)
     {
-      return 0.0; // L = -V everywhere: the lobe is 0
+      return halfway.LobeZero ? 0.0 : Infinite;
     }
-    if (opposite || (!scene.Parallel && !(halfway > 1.0e-3)))
-    {
-      return Infinite; // H turns without bound as V does
-    }
-    centre = Angle(d, h);
-    width = cell.Cone + cell.Spread + view.Spread / halfway;
-    spread = cell.Spread + localView / halfway;
+    centre = Angle(d, halfway.Direction);
+    width = cell.Cone + cell.Spread + view.Spread / halfway.Least;
+    spread = cell.Spread + localView / halfway.Least;
   }
   else
   {

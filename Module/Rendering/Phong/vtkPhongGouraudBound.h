@@ -38,8 +38,8 @@
 #include <array>  // for std::array
 #include <vector> // for std::vector
 
+class vtkBoundingBox;
 class vtkDataArray;
-class vtkIdList;
 class vtkPoints;
 class vtkPolyData;
 
@@ -101,9 +101,11 @@ private:
   struct Cell
   {
     Vector Axis = { { 0.0, 0.0, 0.0 } }; ///< the cell's centre direction
-    double Cone = 0.0;                   ///< largest angle to a cap axis
-    double Spread = 0.0;                 ///< largest cap radius
-    double Radius = 0.0;                 ///< largest triangle radius
+    // While Update bins, the squares: of the longest chords to a cap axis and within a cap, of
+    // the largest radius (comparing them needs no arcsine); then the angles and the length.
+    double Cone = 0.0;   ///< largest angle to a cap axis
+    double Spread = 0.0; ///< largest cap radius
+    double Radius = 0.0; ///< largest triangle radius
     std::size_t Count = 0;
   };
   /// The view vector over the whole surface: a cone, and the eye's least distance.
@@ -113,14 +115,27 @@ private:
     double Spread = 0.0;
     double Nearest = 0.0;
   };
+  /// Blinn's halfway vector for one light over the view cone (unused for Phong).
+  struct Halfway
+  {
+    Vector Direction = { { 0.0, 0.0, 1.0 } };
+    double Least = 0.0;    ///< |L + V| at its least over the view cone
+    bool LobeZero = false; ///< L = -V in parallel projection: the lobe is 0
+    bool Unbounded = false;
+  };
   bool MakeView(const Scene& scene, View& view) const;
-  double CellBound(const Cell& cell, const Scene& scene, const View& view, double side) const;
+  static Halfway MakeHalfway(const Scene& scene, const View& view, const Vector& toLight);
+  static double CellBound(const Cell& cell, const Scene& scene, const View& view,
+    const std::vector<Halfway>& halfways, double side);
   static double DiffuseBound(double spread, double nearLight, double farLight);
-  double SpecularBound(const Cell& cell, const Scene& scene, const View& view, const Vector& d,
-    const Vector& toLight, double localView, double farLight) const;
-  void AddPolygon(vtkIdList* ids, vtkPoints* points, vtkDataArray* normals, double box[6]);
+  static double SpecularBound(const Cell& cell, const Scene& scene, const View& view,
+    const Vector& d, const Vector& toLight, const Halfway& halfway, double localView,
+    double farLight);
+  void AddPolygon(vtkIdType count, const vtkIdType* ids, vtkPoints* points, vtkDataArray* normals,
+    vtkBoundingBox& box);
 
   std::vector<Cell> Cells;
+  std::vector<Vector> CornerNormals, CornerPositions;        ///< AddPolygon's, reused
   std::array<double, 4> Sphere = { { 0.0, 0.0, 0.0, 0.0 } }; ///< the points' bounding sphere
   std::size_t Triangles = 0;
   std::size_t Points = 0;

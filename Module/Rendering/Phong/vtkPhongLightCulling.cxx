@@ -190,7 +190,6 @@ double vtkPhongLightCulling::ContributionBound(vtkLight* light, bool isSpot,
   const double lightPositionVC[3], const double spotAxisVC[3], const double boxVC[6],
   const double materialWeight[3][3])
 {
-  const double intensity = LightValue(light->GetIntensity());
   const double* colors[3] = { light->GetAmbientColor(), light->GetDiffuseColor(),
     light->GetSpecularColor() };
   double largest = 0.0;
@@ -200,7 +199,7 @@ double vtkPhongLightCulling::ContributionBound(vtkLight* light, bool isSpot,
     for (int term = 0; term < 3; ++term)
     {
       channel += materialWeight[term][c] *
-        std::min(LightValue(colors[term][c]) * intensity, vtkPhongProblemLog::LargestValue);
+        vtkPhongLightGeometry::UploadedColor(colors[term][c], light->GetIntensity());
     }
     largest = std::max(largest, channel);
   }

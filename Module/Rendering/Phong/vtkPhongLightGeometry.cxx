@@ -6,8 +6,10 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkPhongProblemLog.h"
 #include "vtkTransform.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -17,6 +19,14 @@ vtkTransform* UserLightTransform(vtkRenderer* ren)
   vtkOpenGLRenderer* oglRenderer = vtkOpenGLRenderer::SafeDownCast(ren);
   return oglRenderer ? oglRenderer->GetUserLightTransform() : nullptr;
 }
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongLightGeometry::UploadedColor(double color, double intensity)
+{
+  auto sanitized = [](double value)
+  { return (value >= 0.0 && std::isfinite(value)) ? value : 0.0; };
+  return std::min(sanitized(color) * sanitized(intensity), vtkPhongProblemLog::LargestValue);
 }
 
 //------------------------------------------------------------------------------

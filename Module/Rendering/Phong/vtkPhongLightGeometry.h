@@ -32,6 +32,14 @@ public:
   static bool IsUserTransformed(vtkLight* light, vtkRenderer* ren);
 
   /**
+   * A component of a light colour times the light's intensity as vtkPhongLightUniforms
+   * uploads it, before the float cast: each factor finite and >= 0 (else 0), the product at
+   * most vtkPhongProblemLog::LargestValue. For the parts that compare or bound light values
+   * without reporting them (the uniforms report what they substitute).
+   */
+  static double UploadedColor(double color, double intensity);
+
+  /**
    * The renderer's lights that are switched on, in the renderer's order (the order of the
    * light indices in messages and of DebugLightIndex).
    */

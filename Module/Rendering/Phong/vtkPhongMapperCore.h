@@ -143,7 +143,7 @@ public:
   int GetNumberOfShaderVariants() const;
   double GetLastShaderBuildTime() const;
   int GetNumberOfCulledLights() const; ///< by the last planned primitive
-  double GetErrorBound() const; ///< of the last planned primitive, in 8-bit levels
+  double GetErrorBound() const;        ///< of the last planned primitive, in 8-bit levels
   const std::string& GetLastShaderSignature() const;
   const std::string& GetLastVertexShaderSource() const;
   const std::string& GetLastFragmentShaderSource() const;

@@ -62,11 +62,10 @@ bool HasSpotFalloff(vtkLight* light)
 }
 
 // A component of a light colour times its intensity exactly as vtkPhongLightUniforms uploads
-// it: each factor finite and >= 0 (else 0), the product at most LargestValue, then a float.
+// it, float included.
 float UploadedColorComponent(double color, double intensity)
 {
-  return static_cast<float>(
-    std::min(Sanitized(color) * Sanitized(intensity), vtkPhongProblemLog::LargestValue));
+  return static_cast<float>(vtkPhongLightGeometry::UploadedColor(color, intensity));
 }
 
 // Whether a light's specular colour, as uploaded, differs from its diffuse colour. vtkLight's

@@ -21,14 +21,14 @@ namespace
 struct Case
 {
   const char* Name;
-  int Resolution;      // of the sphere
-  int WindowSize;      // pixels
-  int Lights;          // directional, spread around the view
-  bool PointLight;     // one point light added
+  int Resolution;  // of the sphere
+  int WindowSize;  // pixels
+  int Lights;      // directional, spread around the view
+  bool PointLight; // one point light added
   double Shininess;
   bool Blinn;
   bool Parallel;
-  double Budget;       // levels
+  double Budget; // levels
   bool ExpectPerVertex;
 };
 
@@ -39,8 +39,7 @@ void AddLights(vtkPhongTest::Scene& view, const Case& c)
   for (int i = 0; i < c.Lights; ++i)
   {
     const double angle = 2.399963 * i; // the golden angle: directions spread evenly
-    const double position[3] = { std::cos(angle) * (0.3 + 0.1 * i), std::sin(angle) * 0.8,
-      1.0 };
+    const double position[3] = { std::cos(angle) * (0.3 + 0.1 * i), std::sin(angle) * 0.8, 1.0 };
     vtkLight* light = vtkPhongTest::AddLight(view, position, origin, white, false);
     light->SetIntensity(1.0 / c.Lights);
   }
@@ -83,8 +82,8 @@ bool RunCase(const Case& c)
   const auto measured = vtkPhongTest::MeasureAgainst(picture, exact, 1);
   const bool perVertex = signature.find("PER_VERTEX") != std::string::npos;
   const double errorLevels = measured.MaxAbsolute * 255.0;
-  std::cout << c.Name << ": " << (perVertex ? "per vertex" : "per fragment") << ", bound "
-            << bound << " levels, largest error " << errorLevels << " levels over "
+  std::cout << c.Name << ": " << (perVertex ? "per vertex" : "per fragment") << ", bound " << bound
+            << " levels, largest error " << errorLevels << " levels over "
             << measured.ComparedPixels << " pixels (budget " << c.Budget << ")\n";
   bool ok = measured.Valid && measured.NaNPixels == 0 && measured.InfPixels == 0;
   if (perVertex != c.ExpectPerVertex)
@@ -97,8 +96,8 @@ bool RunCase(const Case& c)
   const double allowed = c.Budget > 0.0 ? c.Budget : 0.05;
   if (!(errorLevels <= allowed) || !(bound <= std::max(c.Budget, 0.5)))
   {
-    std::cerr << c.Name << ": error " << errorLevels << " or bound " << bound
-              << " levels beyond " << allowed << "\n";
+    std::cerr << c.Name << ": error " << errorLevels << " or bound " << bound << " levels beyond "
+              << allowed << "\n";
     ok = false;
   }
   return ok;
@@ -109,16 +108,15 @@ int TestPhongErrorBudget(int, char*[])
 {
   const Case cases[] = {
     { "exact, budget 0", 128, 600, 3, false, 40.0, true, true, 0.0, false },
-    { "sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0, true, true, 3.0,
-      true },
-    { "sphere 128, 3 lights, Phong 40, perspective, 10 levels", 128, 600, 3, false, 40.0,
-      false, false, 10.0, true },
+    { "sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0, true, true, 3.0, true },
+    { "sphere 128, 3 lights, Phong 40, perspective, 10 levels", 128, 600, 3, false, 40.0, false,
+      false, 10.0, true },
     { "sphere 128, 8 lights, Blinn 10, perspective, 6 levels", 128, 600, 8, false, 10.0, true,
       false, 6.0, true },
     { "sphere 128, 2 lights, Blinn 200, 8 levels", 128, 600, 2, false, 200.0, true, true, 8.0,
       true },
-    { "sphere 128, 3 lights, Blinn 40, 1 level: the terminator's kink does not fit", 128, 600,
-      3, false, 40.0, true, true, 1.0, false },
+    { "sphere 128, 3 lights, Blinn 40, 1 level: the terminator's kink does not fit", 128, 600, 3,
+      false, 40.0, true, true, 1.0, false },
     { "coarse sphere 24, 0.25 level: does not fit", 24, 600, 3, false, 40.0, true, true, 0.25,
       false },
     { "sub-pixel sphere 400 in 150 px: costs more", 400, 150, 3, false, 40.0, true, true, 2.0,

@@ -80,9 +80,9 @@ double Shade(const Scene& scene, const Vector& n, const Vector& v)
 
 Vector ToEye(const Scene& scene, const Vector& p)
 {
-  return scene.Parallel ? scene.ToEyeMC
-                        : Unit({ { scene.EyeMC[0] - p[0], scene.EyeMC[1] - p[1],
-                            scene.EyeMC[2] - p[2] } });
+  return scene.Parallel
+    ? scene.ToEyeMC
+    : Unit({ { scene.EyeMC[0] - p[0], scene.EyeMC[1] - p[1], scene.EyeMC[2] - p[2] } });
 }
 
 // The largest |per-vertex - per-fragment| over every triangle, side and grid point.
@@ -270,8 +270,8 @@ bool CheckLobeBound(std::mt19937& random, double& tightest)
         largest = std::max(largest, std::abs(vertex - lobe(m)));
       }
     }
-    const double bound = vtkPhongGouraudBound::LobeBound(
-      spread, std::max(offset - spread, 0.0), offset + spread, n);
+    const double bound =
+      vtkPhongGouraudBound::LobeBound(spread, std::max(offset - spread, 0.0), offset + spread, n);
     const double nearest = std::max(offset - spread, 0.0);
     const double largestLobe = nearest >= 1.5707963267948966 ? 0.0 : std::pow(std::cos(nearest), n);
     const double used = std::min(bound, largestLobe);
@@ -319,16 +319,16 @@ int TestPhongGouraudBound(int, char*[])
       tightest = std::max(tightest, actual / std::max(limit, 1.0e-300));
       if (actual > limit * (1.0 + 1.0e-9) + 1.0e-12)
       {
-        std::cerr << "bound broken: mesh " << kind << " scene " << index << " n "
-                  << scene.Shininess << (scene.Blinn ? " Blinn" : " Phong")
+        std::cerr << "bound broken: mesh " << kind << " scene " << index << " n " << scene.Shininess
+                  << (scene.Blinn ? " Blinn" : " Phong")
                   << (scene.Parallel ? " parallel" : " perspective") << ": actual " << actual
                   << " > bound " << limit << "\n";
         ok = false;
       }
     }
   }
-  std::cout << "meshes: " << bounded << " of " << total
-            << " scenes bounded, largest actual/bound " << tightest << "\n";
+  std::cout << "meshes: " << bounded << " of " << total << " scenes bounded, largest actual/bound "
+            << tightest << "\n";
   if (bounded < total * 3 / 4)
   {
     std::cerr << "too few scenes bounded: " << bounded << " of " << total << "\n";
