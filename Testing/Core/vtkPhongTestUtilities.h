@@ -22,6 +22,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
+#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongOpenGL.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
@@ -292,6 +293,11 @@ inline void SetDebugView(Scene& scene, int view, int lightIndex = 0)
     {
       mapper->SetDebugView(view);
       mapper->SetDebugLightIndex(lightIndex);
+    }
+    else if (auto* composite = vtkPhongCompositePolyDataMapper::SafeDownCast(actor->GetMapper()))
+    {
+      composite->SetDebugView(view);
+      composite->SetDebugLightIndex(lightIndex);
     }
   }
 }

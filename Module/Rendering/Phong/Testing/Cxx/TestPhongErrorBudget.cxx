@@ -10,6 +10,8 @@
 
 #include "vtkCamera.h"
 #include "vtkLight.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongOFFReader.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
@@ -32,7 +34,46 @@ struct Case
   bool Parallel;
   double Budget; // levels
   bool ExpectPerVertex;
+  bool Composite = false; // two blocks through vtkPhongCompositePolyDataMapper
 };
+
+// The case's actor: one mesh through vtkPhongPolyDataMapper, or the mesh and a small sphere
+// beside it as two blocks of one vtkPhongCompositePolyDataMapper (one block mapper, one
+// vertex buffer: the bound bins both blocks).
+vtkActor* AddSurface(vtkPhongTest::Scene& view, const Case& c, vtkPolyData* mesh)
+{
+  if (!c.Composite)
+  {
+    vtkActor* actor = vtkPhongTest::AddActor(view, mesh);
+    vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper())->SetErrorBudget(c.Budget);
+    return actor;
+  }
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, mesh);
+  blocks->SetBlock(
+    1, vtkPhongTest::Moved(vtkPhongTest::MakeSphere(c.Resolution, 0.15), 0.55, 0.45, 0.3));
+  vtkNew<vtkPhongCompositePolyDataMapper> mapper;
+  mapper->SetInputDataObject(blocks);
+  mapper->SetErrorBudget(c.Budget);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  view.Renderer->AddActor(actor);
+  return actor;
+}
+
+// The last plan's signature and bound, from either mapper.
+void LastPlan(vtkActor* actor, std::string& signature, double& bound)
+{
+  if (auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper()))
+  {
+    signature = mapper->GetLastShaderSignature();
+    bound = mapper->GetErrorBound();
+    return;
+  }
+  auto* composite = vtkPhongCompositePolyDataMapper::SafeDownCast(actor->GetMapper());
+  signature = composite->GetLastShaderSignature();
+  bound = composite->GetErrorBound();
+}
 
 void AddLights(vtkPhongTest::Scene& view, const Case& c)
 {
@@ -68,9 +109,8 @@ bool RunCase(const Case& c, vtkPolyData* file)
   material->SetInterpolationToPhong();
   vtkSmartPointer<vtkPolyData> mesh =
     c.Resolution ? vtkPhongTest::MakeSphere(c.Resolution) : vtkSmartPointer<vtkPolyData>(file);
-  vtkActor* actor = vtkPhongTest::AddActor(view, mesh, material);
-  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
-  mapper->SetErrorBudget(c.Budget);
+  vtkActor* actor = AddSurface(view, c, mesh);
+  actor->SetProperty(material);
   view.LookFromZ(2.2);
   if (!c.Resolution)
   {
@@ -84,8 +124,9 @@ bool RunCase(const Case& c, vtkPolyData* file)
   reference->SetRenderer(view.Renderer);
   reference->SetActor(actor);
   auto picture = vtkPhongTest::RenderFloat(view, pass);
-  const std::string signature = mapper->GetLastShaderSignature();
-  const double bound = mapper->GetErrorBound();
+  std::string signature;
+  double bound = 0.0;
+  LastPlan(actor, signature, bound);
   auto exact = vtkPhongTest::ShadeGBuffer(view, pass, reference);
   const auto measured = vtkPhongTest::MeasureAgainst(picture, exact, 1);
   const bool perVertex = signature.find("PER_VERTEX") != std::string::npos;
@@ -138,6 +179,10 @@ int TestPhongErrorBudget(int argc, char* argv[])
     { "sub-pixel sphere 400 in 150 px: costs more", 400, 150, 3, false, 40.0, true, true, 2.0,
       false },
     { "a point light: not bounded", 128, 600, 2, true, 40.0, true, true, 1.0, false },
+    { "composite, two blocks, sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0,
+      true, true, 3.0, true, true },
+    { "composite, two blocks, 3 lights, Blinn 40, 1 level", 128, 600, 3, false, 40.0, true, true,
+      1.0, false, true },
     { "bunny00, computed normals, 3 lights, Blinn 40, 2 levels", 0, 600, 3, false, 40.0, true,
       false, 2.0, false },
     // The scan's noisy normals make the bound 125 levels: only a huge budget goes per vertex,
