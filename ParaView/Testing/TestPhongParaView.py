@@ -19,7 +19,10 @@ directional, a point and a spot light. Checks, each failing with "ERROR:":
    was lit by it;
 5. the back faces of the sphere are culled serially (closed) and not under MPI (each
    rank's piece is open), and culling off draws the same picture;
-6. nested contours drawn with the depth pre-pass on: used, and the same picture as without.
+6. nested contours drawn with the depth pre-pass on: used, and the same picture as without;
+7. "Error Budget" is accepted on every rank, and at 3 levels every pixel stays within 3
+   levels (and 8-bit rounding) of the exact picture (this scene's point and spot lights keep
+   it per fragment: only light culling may spend the budget).
 """
 
 import argparse
@@ -105,6 +108,22 @@ def check_back_face_culling(display, view, ranks, culled_picture, out, server):
     if len(unculled) != len(culled_picture) or differing > 4:
         fail("culling the back faces changed %d pixels" % differing)
     display.CullHiddenBackFaces = 1
+
+
+def check_error_budget(display, view, ranks, exact_picture, out):
+    """7: the picture under an error budget of 3 levels stays within it of the exact one
+    (one more level for the 8-bit rounding of each)."""
+    display.ErrorBudget = 3.0
+    Render(view)
+    path = os.path.join(out, "PhongParaView-%dranks-budget.png" % ranks)
+    SaveScreenshot(path, view, ImageResolution=list(SIZE))
+    _, _, _, budget_picture = read_png(path)
+    largest = max(max(abs(x - y) for x, y in zip(a, b))
+                  for a, b in zip(budget_picture, exact_picture))
+    print("error budget 3 levels: largest difference %d levels" % largest)
+    if len(budget_picture) != len(exact_picture) or largest > 4:
+        fail("under an error budget of 3 levels a pixel moved by %d levels" % largest)
+    display.ErrorBudget = 0.0
 
 
 def check_depth_pre_pass(view, ranks, out, hide, server):
@@ -202,6 +221,7 @@ def main():
         if differing > 40:
             fail("%d pixels differ from the serial baseline %s" % (differing, args.baseline))
     check_back_face_culling(display, view, ranks, picture, args.out, args.server)
+    check_error_budget(display, view, ranks, picture, args.out)
 
     # 3: each rank's piece in its own colour (red rank 0, blue rank 1, ...).
     # ColorBy makes the lookup table (ParaView 6 no longer does on ColorArrayName alone).
