@@ -11,6 +11,10 @@
 #                          closed sphere and an open terrain, 1M to 32M triangles (or the
 #                          comma-separated sizes given), with and without input normals
 #                          (docs/results/performance.md)
+#   ./vtkphong.sh budget-sweep [count] [seed]
+#                          the error budget on 1000 random scenes (or count) and a 360-frame
+#                          orbit, every frame within its budget (ctest runs 40 and 120;
+#                          docs/lighting-model.md)
 #   ./vtkphong.sh extremes run the numerical-stability suite (float GPU against
 #                          the double-precision reference) and print its table
 #   ./vtkphong.sh study    regenerate the speed/accuracy trade study
@@ -341,8 +345,6 @@ case "$command" in
       "$root/Testing/Benchmarks/vtkPhongProgramMemory.py"
     PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
       "$root/Testing/Benchmarks/vtkPhongDirectionalCost.py"
-    PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
-      "$root/Testing/Benchmarks/vtkPhongErrorBudget.py"
     ;;
   bench-growth)
     install_packages
@@ -370,6 +372,15 @@ case "$command" in
       "$build/bin/vtkphong-render" -T "$build/Testing/Temporary" || true
     with_display /usr/bin/python3 "$root/Testing/Python/TestPhongFuzzReaders.py" \
       "$build/bin/vtkphong-render" -T "$build/Testing/Temporary" --count 1000 --cli-sample 50
+    ;;
+  budget-sweep)
+    install_packages
+    build_project
+    extract_meshes data/meshes/bunny00.off
+    mkdir -p "$build/Testing/Temporary"
+    with_display "$build/bin/vtkRenderingPhongCxxTests" TestPhongErrorBudget \
+      "$build/data/meshes/bunny00.off" --random "${2:-1000}" --seed "${3:-2026}" --orbit 360 \
+      -T "$build/Testing/Temporary"
     ;;
   extremes)
     install_packages

@@ -7,12 +7,14 @@
  * picture and the exact per-fragment model computed in double. It pays, in this order:
  * - light culling, at most half of the budget (and never more than LightCullingBound);
  * - per-vertex lighting of the surface (vtkPhongGouraudBound), with what is left less the
- *   float rounding of the lighting itself, while
- *   the surface's vertices are fewer than the fragments it covers (ChoosePerVertex).
+ *   float rounding of the lighting itself, while the surface's vertices are fewer than the
+ *   fragments it covers (ChooseMode): every light sum per vertex where that bound fits,
+ *   else (under two lights or more) the specular sums alone, the diffuse term staying exact
+ *   per fragment (its clamp at the terminator is the costliest part of the per-vertex bound).
  * The errors of the mechanisms add up by the triangle inequality, so the picture stays
- * within their sum. Hysteresis is on the safe side only: the planner goes per vertex when
- * the bound is at most 0.8 of what is left, stays while it fits, and goes back at once when
- * it does not.
+ * within their sum. Hysteresis is on the safe side only: the planner moves to a cheaper mode
+ * when its bound is at most 0.8 of what is left, stays while it fits, and goes back at once
+ * when it does not.
  */
 
 #ifndef vtkPhongErrorBudget_h
@@ -27,13 +29,15 @@ class vtkRenderer;
 class vtkPhongErrorBudget
 {
 public:
+  using Mode = vtkPhongGouraudBound::Mode;
+
   /**
-   * Whether the plan's light sums may be evaluated per vertex within `available` (linear
-   * colour), given the primitive's binned triangles and `wasPerVertex`, the last choice;
-   * `bound` receives the bound of per-vertex lighting (+inf when it cannot be bounded).
+   * The cheapest mode of the plan's light sums within `available` (linear colour), given the
+   * primitive's binned triangles and `last`, the last choice; `bound` receives the chosen
+   * mode's bound (0 per fragment).
    */
-  static bool ChoosePerVertex(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
-    const vtkPhongGouraudBound& triangles, double available, bool wasPerVertex, double& bound);
+  static Mode ChooseMode(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
+    vtkPhongGouraudBound& triangles, double available, Mode last, double& bound);
 
 private:
   // The rounding of float lighting against the double model, taken off what per-vertex
@@ -43,6 +47,8 @@ private:
   // normals; false when the actor's matrix is not a similarity (angles would not hold).
   static bool MakeScene(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
     vtkPhongGouraudBound::Scene& scene);
+  // Whether the specular sums alone per vertex save more than they cost: two lobes or more.
+  static bool SpecularPerVertexPays(const vtkPhongGouraudBound::Scene& scene);
   // Whether per-vertex lighting costs less: vertices x sides against the covered fragments.
   static bool PerVertexIsCheaper(
     vtkRenderer* ren, vtkActor* actor, const vtkPhongGouraudBound& triangles, bool twoSided);

@@ -1,6 +1,5 @@
 #include "vtkPhongGouraudBound.h"
 
-#include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
@@ -23,6 +22,9 @@ constexpr int CellsPerEdge = 8; // cube-map cells per face edge: 6 * 8 * 8 cells
 // First-order terms (the view vector's spread over a triangle) take this margin; the brute
 // force of TestPhongGouraudBound found at most 1.003 times the unmargined bound.
 constexpr double FirstOrderMargin = 1.1;
+// A lobe value small enough to bound a cell's lobe by it, without its own bound: 1e-7 of the
+// light is far below the float rounding margin (vtkPhongErrorBudget).
+constexpr double NegligibleLobe = 1.0e-7;
 
 double Dot(const Vector& a, const Vector& b)
 {
@@ -122,7 +124,26 @@ double SupCosSin(double p, int q, double a, double b)
 //------------------------------------------------------------------------------
 double vtkPhongGouraudBound::LobeBound(double spread, double nearAngle, double farAngle, double n)
 {
-  if (!(spread > 0.0) || n == 0.0)
+  return LobeBound(Cap(spread), nearAngle, farAngle, n);
+}
+
+//------------------------------------------------------------------------------
+vtkPhongGouraudBound::Cap::Cap(double spread)
+  : Spread(spread)
+{
+  if (spread > 0.0 && spread < 0.25 * Pi)
+  {
+    const double tangent = std::tan(spread);
+    this->HalfTangent2 = 0.5 * tangent * tangent;
+    this->Radial = (1.0 - std::cos(spread) * std::cos(2.0 * spread)) / std::sin(spread);
+    this->Kink = 0.5 * std::sin(spread);
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongGouraudBound::LobeBound(const Cap& cap, double nearAngle, double farAngle, double n)
+{
+  if (!(cap.Spread > 0.0) || n == 0.0)
   {
     return 0.0; // equal normals, or a lobe that is 1 wherever it is gated on
   }
@@ -134,7 +155,7 @@ double vtkPhongGouraudBound::LobeBound(double spread, double nearAngle, double f
   // Below n = 2 the clamp at c = 0 is no longer smooth enough for Waldron's identity: for
   // n = 1 it is a kink, which adds at most sin(R)/2; otherwise only the largest value bounds.
   const bool kink = n < 2.0 && farAngle >= HalfPi;
-  if (spread >= 0.25 * Pi || (kink && n != 1.0))
+  if (cap.Spread >= 0.25 * Pi || (kink && n != 1.0))
   {
     return Infinite;
   }
@@ -144,9 +165,7 @@ double vtkPhongGouraudBound::LobeBound(double spread, double nearAngle, double f
   const double hs = (curvature > 0.0 ? curvature * SupCosSin(n - 2.0, 2, a, b) : 0.0) +
     n * std::pow(std::cos(a), n);
   const double g1 = n * SupCosSin(n - 1.0, 1, a, b);
-  const double tangent = std::tan(spread);
-  const double radial = (1.0 - std::cos(spread) * std::cos(2.0 * spread)) / std::sin(spread);
-  return 0.5 * tangent * tangent * (hs + 2.0 * g1 * radial) + (kink ? 0.5 * std::sin(spread) : 0.0);
+  return cap.HalfTangent2 * (hs + 2.0 * g1 * cap.Radial) + (kink ? cap.Kink : 0.0);
 }
 
 //------------------------------------------------------------------------------
@@ -165,7 +184,7 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
   this->Triangles = 0;
   this->Points = 0;
   this->Unbounded = false;
-  vtkBoundingBox box;
+  this->LastBounds = { -1.0, -1.0 };
   for (vtkPolyData* block : blocks)
   {
     vtkDataArray* normals = block->GetPointData()->GetNormals();
@@ -184,7 +203,7 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
       vtkIdType count;
       const vtkIdType* ids;
       polys->GetCurrentCell(count, ids);
-      this->AddPolygon(count, ids, points, normals, box);
+      this->AddPolygon(count, ids, points, normals);
     }
   }
   for (Cell& cell : this->Cells)
@@ -192,9 +211,14 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
     cell.Cone = ChordAngle(cell.Cone);
     cell.Spread = ChordAngle(cell.Spread);
     cell.Radius = std::sqrt(cell.Radius);
+    Vector diagonal;
+    for (int k = 0; k < 3; ++k)
+    {
+      diagonal[k] = cell.High[k] - cell.Low[k];
+      cell.Low[k] = 0.5 * (cell.Low[k] + cell.High[k]);
+    }
+    cell.High[0] = 0.5 * Norm(diagonal);
   }
-  box.GetCenter(this->Sphere.data());
-  this->Sphere[3] = box.IsValid() ? 0.5 * box.GetDiagonalLength() : 0.0;
   if (this->Unbounded)
   {
     this->Triangles = 0;
@@ -205,8 +229,8 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
 // One polygon as one cap: the cap of all its normals contains each triangle's that VTK cuts
 // it into, and the ball around its points each triangle's ball. The cell keeps squares while
 // binning (of the chords for its cone and spread, of the radius), Update their roots.
-void vtkPhongGouraudBound::AddPolygon(vtkIdType count, const vtkIdType* ids, vtkPoints* points,
-  vtkDataArray* normals, vtkBoundingBox& box)
+void vtkPhongGouraudBound::AddPolygon(
+  vtkIdType count, const vtkIdType* ids, vtkPoints* points, vtkDataArray* normals)
 {
   if (count < 3)
   {
@@ -227,7 +251,6 @@ void vtkPhongGouraudBound::AddPolygon(vtkIdType count, const vtkIdType* ids, vtk
       this->Unbounded = true; // lit as N = V per vertex, by the face per fragment
       return;
     }
-    box.AddPoint(position[i].data());
     for (int k = 0; k < 3; ++k)
     {
       axis[k] += unit[i][k];
@@ -245,39 +268,87 @@ void vtkPhongGouraudBound::AddPolygon(vtkIdType count, const vtkIdType* ids, vtk
   {
     cell.Spread = std::max(cell.Spread, SquaredDistance(axis, unit[i]));
     cell.Radius = std::max(cell.Radius, SquaredDistance(position[i], centroid));
+    for (int k = 0; k < 3; ++k)
+    {
+      cell.Low[k] = std::min(cell.Low[k], position[i][k]);
+      cell.High[k] = std::max(cell.High[k], position[i][k]);
+    }
   }
   ++cell.Count;
   ++this->Triangles;
 }
 
 //------------------------------------------------------------------------------
-double vtkPhongGouraudBound::Bound(const Scene& scene) const
+bool vtkPhongGouraudBound::Scene::Light::operator==(const Light& other) const
 {
+  return this->ToLightMC == other.ToLightMC && this->Diffuse == other.Diffuse &&
+    this->Specular == other.Specular;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongGouraudBound::Scene::operator==(const Scene& other) const
+{
+  return this->Lights == other.Lights && this->Parallel == other.Parallel &&
+    this->ToEyeMC == other.ToEyeMC && this->EyeMC == other.EyeMC &&
+    this->Shininess == other.Shininess && this->Blinn == other.Blinn &&
+    this->TwoSided == other.TwoSided && this->SmoothTerminator == other.SmoothTerminator;
+}
+
+//------------------------------------------------------------------------------
+vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Bound(const Scene& scene)
+{
+  if (this->LastBounds.PerVertex < 0.0 || !(scene == this->LastScene))
+  {
+    this->LastScene = scene;
+    this->LastBounds = this->Compute(scene);
+  }
+  return this->LastBounds;
+}
+
+//------------------------------------------------------------------------------
+vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene) const
+{
+  Bounds largest = { Infinite, Infinite };
   if (this->Unbounded || this->Triangles == 0)
   {
-    return Infinite;
+    return largest;
   }
-  View view;
-  if (!this->MakeView(scene, view))
-  {
-    return Infinite;
-  }
-  std::vector<Halfway> halfways;
-  for (const Scene::Light& light : scene.Lights)
-  {
-    halfways.push_back(MakeHalfway(scene, view, light.ToLightMC));
-  }
-  double largest = 0.0;
+  largest = { 0.0, 0.0 };
+  // The angle from the lobe's axis beyond which cos^n is below NegligibleLobe.
+  const double lobeCut =
+    scene.Shininess > 0.0 ? std::acos(std::pow(NegligibleLobe, 1.0 / scene.Shininess)) : Infinite;
+  std::vector<Halfway> halfways(scene.Lights.size());
+  bool halfwaysMade = false;
   for (const Cell& cell : this->Cells)
   {
+    View view;
     if (cell.Count == 0)
     {
       continue;
     }
-    largest = std::max(largest, CellBound(cell, scene, view, halfways, 1.0));
-    if (scene.TwoSided)
+    if (!MakeView(scene, cell, view))
     {
-      largest = std::max(largest, CellBound(cell, scene, view, halfways, -1.0));
+      return { Infinite, Infinite };
+    }
+    view.LobeCut = lobeCut;
+    // In parallel projection the view, and so the halfway vectors, are the same for every cell.
+    if (!scene.Parallel || !halfwaysMade)
+    {
+      halfwaysMade = true;
+      for (std::size_t i = 0; i < scene.Lights.size(); ++i)
+      {
+        halfways[i] = MakeHalfway(scene, view, scene.Lights[i].ToLightMC);
+      }
+    }
+    for (double side : { 1.0, -1.0 })
+    {
+      if (side < 0.0 && !scene.TwoSided)
+      {
+        continue;
+      }
+      const Bounds bounds = CellBound(cell, scene, view, halfways, side);
+      largest.PerVertex = std::max(largest.PerVertex, bounds.PerVertex);
+      largest.SpecularPerVertex = std::max(largest.SpecularPerVertex, bounds.SpecularPerVertex);
     }
   }
   return largest;
@@ -306,9 +377,10 @@ vtkPhongGouraudBound::Halfway vtkPhongGouraudBound::MakeHalfway(
 }
 
 //------------------------------------------------------------------------------
-// The view vector over the surface: its direction towards the eye from the bounding sphere's
-// centre, the half-angle of the cone holding it everywhere, and the eye's least distance.
-bool vtkPhongGouraudBound::MakeView(const Scene& scene, View& view) const
+// The view vector over one cell's triangles: its direction towards the eye from the centre of
+// the cell's ball, the half-angle of the cone holding it over the ball, and the eye's least
+// distance.
+bool vtkPhongGouraudBound::MakeView(const Scene& scene, const Cell& cell, View& view)
 {
   if (scene.Parallel)
   {
@@ -317,13 +389,13 @@ bool vtkPhongGouraudBound::MakeView(const Scene& scene, View& view) const
   }
   for (int k = 0; k < 3; ++k)
   {
-    view.Centre[k] = scene.EyeMC[k] - this->Sphere[k];
+    view.Centre[k] = scene.EyeMC[k] - cell.Low[k];
   }
   const double distance = Norm(view.Centre);
-  const double radius = this->Sphere[3];
+  const double radius = cell.High[0];
   if (!(distance > 1.01 * radius) || !Normalize(view.Centre))
   {
-    return false; // the eye inside or at the surface's sphere: V takes every direction
+    return false; // the eye inside or at the cell's ball: V takes every direction
   }
   view.Spread = std::asin(radius / distance);
   view.Nearest = distance - radius;
@@ -331,48 +403,73 @@ bool vtkPhongGouraudBound::MakeView(const Scene& scene, View& view) const
 }
 
 //------------------------------------------------------------------------------
-// Every triangle of the cell, on one side (1: as is; -1: reversed, two-sided back faces).
-double vtkPhongGouraudBound::CellBound(const Cell& cell, const Scene& scene, const View& view,
-  const std::vector<Halfway>& halfways, double side)
+// Every triangle of the cell, on one side (1: as is; -1: reversed, two-sided back faces). The
+// angles between the light and the cell's normals, [toLight - width, toLight + width], go by
+// their cosines and sines (no arctangent per light and cell: this runs per frame).
+vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, const Scene& scene,
+  const View& view, const std::vector<Halfway>& halfways, double side)
 {
   const Vector d = { { side * cell.Axis[0], side * cell.Axis[1], side * cell.Axis[2] } };
   const double width = cell.Cone + cell.Spread; // normals' angles around d
+  const double cosWidth = std::cos(width), sinWidth = std::sin(width);
   // The view vector's spread over one triangle (0 in parallel projection).
   const double localView = scene.Parallel ? 0.0
     : cell.Radius < view.Nearest          ? std::asin(cell.Radius / view.Nearest)
                                           : Infinite;
-  double sum = 0.0;
+  const Cap normals(cell.Spread);
+  const double cosGateOpen = std::sin(1.0e-3); // cos(pi/2 - 1e-3)
+  double diffuse = 0.0, specular = 0.0;
   for (std::size_t i = 0; i < scene.Lights.size(); ++i)
   {
     const Scene::Light& light = scene.Lights[i];
-    const double toLight = Angle(d, light.ToLightMC);
-    const double nearLight = std::max(toLight - width, 0.0);
-    const double farLight = std::min(toLight + width, Pi);
-    if (nearLight >= HalfPi)
+    const double c = std::min(std::max(Dot(d, light.ToLightMC), -1.0), 1.0); // cos(toLight)
+    const double s = std::sqrt(1.0 - c * c);
+    const bool wide = width >= HalfPi;
+    if (!wide && c <= -sinWidth)
     {
-      continue; // every normal faces away: no diffuse, the specular gate shut
+      continue; // every normal faces away (near angle >= pi/2): no diffuse, the gate shut
     }
-    sum += light.Diffuse * DiffuseBound(cell.Spread, nearLight, farLight);
+    const double cosNear = c >= cosWidth ? 1.0 : c * cosWidth + s * sinWidth;
+    // cos(toLight + width), or -1 once the far angle would pass pi.
+    const double cosFar =
+      wide || c * sinWidth + s * cosWidth < 0.0 ? -1.0 : c * cosWidth - s * sinWidth;
+    const double sinFar = cosFar <= 0.0 ? 1.0 : s * cosWidth + c * sinWidth; // of min(far, pi/2)
+    diffuse += light.Diffuse * DiffuseBound(normals, cosNear, sinFar, cosFar <= 0.0);
     if (light.Specular > 0.0)
     {
-      sum += light.Specular *
-        SpecularBound(cell, scene, view, d, light.ToLightMC, halfways[i], localView, farLight);
+      specular += light.Specular *
+        SpecularBound(
+          cell, scene, view, d, light.ToLightMC, halfways[i], localView, cosFar <= cosGateOpen);
     }
   }
-  return sum >= 0.0 ? sum : Infinite; // NaN, from a degenerate input, bounds nothing
+  // NaN, from a degenerate input, bounds nothing.
+  const auto bounded = [](double value) { return value >= 0.0 ? value : Infinite; };
+  return { bounded(diffuse + specular), bounded(specular) };
 }
 
 //------------------------------------------------------------------------------
 // max(N.L, 0): the lobe bound with n = 1 (the terminator a kink), never more than the
-// term's largest value.
-double vtkPhongGouraudBound::DiffuseBound(double spread, double nearLight, double farLight)
+// term's largest value: for n = 1, Hs = cos(near), G1 = sin(min(far, pi/2)).
+double vtkPhongGouraudBound::DiffuseBound(
+  const Cap& normals, double cosNear, double sinFar, bool terminator)
 {
-  return std::min(LobeBound(spread, nearLight, farLight, 1.0), std::cos(nearLight));
+  if (!(normals.Spread > 0.0))
+  {
+    return 0.0;
+  }
+  if (normals.Spread >= 0.25 * Pi)
+  {
+    return cosNear;
+  }
+  const double bound = normals.HalfTangent2 * (cosNear + 2.0 * sinFar * normals.Radial) +
+    (terminator ? normals.Kink : 0.0);
+  return std::min(bound, cosNear);
 }
 
 //------------------------------------------------------------------------------
 double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene, const View& view,
-  const Vector& d, const Vector& toLight, const Halfway& halfway, double localView, double farLight)
+  const Vector& d, const Vector& toLight, const Halfway& halfway, double localView,
+  bool gateCrosses)
 {
   // The lobe's axis against the cell's normals: Blinn's H against N, or Phong's reflected
   // vector (which turns twice as far as N) against V.
@@ -402,9 +499,15 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
     scale = FirstOrderMargin;
   }
   const double nearLobe = std::max(centre - width, 0.0);
+  // Where the lobe is below 1e-7 of the light over the whole cell (most cells, for all but the
+  // widest lobes), that bounds it: no power and no lobe bound.
+  if (nearLobe >= view.LobeCut)
+  {
+    return NegligibleLobe;
+  }
   const double largest = nearLobe >= HalfPi ? 0.0 : std::pow(std::cos(nearLobe), n);
   // The gate (N.L > 1e-4) or the smooth terminator crossing the cell: only the largest value.
-  if (scene.SmoothTerminator || farLight >= HalfPi - 1.0e-3)
+  if (scene.SmoothTerminator || gateCrosses)
   {
     return largest;
   }

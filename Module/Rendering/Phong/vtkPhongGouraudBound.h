@@ -20,12 +20,16 @@
  * angles alpha between H and the normals of the cap. Both values lie in [0, sup s], so
  * sup s bounds the difference too (the only bound where a lobe's clamp or the specular gate
  * crosses the triangle). The Phong lobe takes the reflected vector's cap (2R); the diffuse
- * term is the case s(c) = max(c, 0), n = 1.
+ * term is the case s(c) = max(c, 0), n = 1, whose kink at the terminator costs sin(R)/2.
+ * Bound() also gives the bound without the diffuse term, for the mode that lights the
+ * diffuse term per fragment from interpolated dot products (exact: max(n.L, 0) / |n| with
+ * n the interpolated normal) and only the specular sums per vertex.
  *
  * Update() bins the triangles once per upload by the direction of their normal cap (a cube
- * map of 6 x 8 x 8 cells), keeping per cell the cone of cap axes, the largest cap radius and
- * the largest triangle radius; Bound() then costs cells x lights per frame and bounds every
- * triangle of a cell at once (the cell's angles widen by its cone). Only directional lights
+ * map of 6 x 8 x 8 cells), keeping per cell the cone of cap axes, the largest cap radius, the
+ * largest triangle radius and the ball around its points; Bound() then costs cells x lights
+ * per frame and bounds every triangle of a cell at once (the cell's angles widen by its cone,
+ * and in perspective by the view vector's cone over the cell's ball). Only directional lights
  * are bounded; a perspective view adds the view vector's spread over a triangle (first
  * order, with a margin of 1.1 checked by brute force in TestPhongGouraudBound).
  */
@@ -33,17 +37,17 @@
 #ifndef vtkPhongGouraudBound_h
 #define vtkPhongGouraudBound_h
 
-#include "vtkType.h" // for vtkMTimeType
+#include "vtkRenderingPhongModule.h" // for export macro (vtkPhongBenchmark times Bound)
+#include "vtkType.h"                 // for vtkMTimeType
 
 #include <array>  // for std::array
 #include <vector> // for std::vector
 
-class vtkBoundingBox;
 class vtkDataArray;
 class vtkPoints;
 class vtkPolyData;
 
-class vtkPhongGouraudBound
+class VTKRENDERINGPHONG_EXPORT vtkPhongGouraudBound
 {
 public:
   /// What lights the surface, in the model coordinates of its normals (unit vectors).
@@ -54,6 +58,7 @@ public:
       std::array<double, 3> ToLightMC; ///< L, from the surface towards the light
       double Diffuse = 0.0;            ///< kd*Cd*Ld*I, the largest over channels and sides
       double Specular = 0.0;           ///< ks*Cs*Ls*I*normalization, likewise
+      bool operator==(const Light& other) const;
     };
     std::vector<Light> Lights;
     bool Parallel = true;
@@ -63,6 +68,7 @@ public:
     bool Blinn = true;
     bool TwoSided = true;          ///< back faces lit with the reversed normals
     bool SmoothTerminator = false; ///< the lobe times max(N.L, 0) instead of the gate
+    bool operator==(const Scene& other) const;
   };
 
   /**
@@ -72,11 +78,19 @@ public:
    */
   void Update(const std::vector<vtkPolyData*>& blocks, vtkMTimeType buildTime);
 
+  /// Bounds of the two per-vertex modes; +inf where they cannot be bounded.
+  struct Bounds
+  {
+    double PerVertex;         ///< every light sum per vertex
+    double SpecularPerVertex; ///< the specular sums per vertex, the diffuse per fragment
+  };
+
   /**
    * The largest difference per pixel and channel (linear colour) between per-vertex and
-   * per-fragment lighting of the binned triangles in `scene`; +inf when it cannot be bounded.
+   * per-fragment lighting of the binned triangles in `scene`, for both per-vertex modes.
+   * The scene of the last call is remembered: a still view costs nothing.
    */
-  double Bound(const Scene& scene) const;
+  Bounds Bound(const Scene& scene);
 
   /**
    * The bound E above for one cap: `spread` its angular radius, [near, far] the range of
@@ -93,11 +107,20 @@ public:
   /// Points of the binned blocks (the vertices per-vertex lighting would light).
   std::size_t GetNumberOfPoints() const { return this->Points; }
 
-  /// Whether the planner chose per-vertex lighting last time (its hysteresis).
-  bool ChosePerVertex = false;
+  /// Where the light sums go, from the most exact and dearest to the cheapest.
+  enum class Mode
+  {
+    PerFragment,
+    SpecularPerVertex,
+    PerVertex
+  };
+
+  /// The planner's choice last time (its hysteresis).
+  Mode Chosen = Mode::PerFragment;
 
 private:
   using Vector = std::array<double, 3>;
+  static constexpr double Huge = 1.0e300;
   struct Cell
   {
     Vector Axis = { { 0.0, 0.0, 0.0 } }; ///< the cell's centre direction
@@ -107,6 +130,8 @@ private:
     double Spread = 0.0; ///< largest cap radius
     double Radius = 0.0; ///< largest triangle radius
     std::size_t Count = 0;
+    /// The box of its points while Update bins; then the ball holding them (centre, radius).
+    Vector Low = { { Huge, Huge, Huge } }, High = { { -Huge, -Huge, -Huge } };
   };
   /// The view vector over the whole surface: a cone, and the eye's least distance.
   struct View
@@ -114,6 +139,7 @@ private:
     Vector Centre = { { 0.0, 0.0, 1.0 } };
     double Spread = 0.0;
     double Nearest = 0.0;
+    double LobeCut = 0.0; ///< the angle from the lobe's axis past which it is negligible
   };
   /// Blinn's halfway vector for one light over the view cone (unused for Phong).
   struct Halfway
@@ -123,23 +149,31 @@ private:
     bool LobeZero = false; ///< L = -V in parallel projection: the lobe is 0
     bool Unbounded = false;
   };
-  bool MakeView(const Scene& scene, View& view) const;
+  static bool MakeView(const Scene& scene, const Cell& cell, View& view);
   static Halfway MakeHalfway(const Scene& scene, const View& view, const Vector& toLight);
-  static double CellBound(const Cell& cell, const Scene& scene, const View& view,
+  static Bounds CellBound(const Cell& cell, const Scene& scene, const View& view,
     const std::vector<Halfway>& halfways, double side);
-  static double DiffuseBound(double spread, double nearLight, double farLight);
+  /// The terms of LobeBound that depend on the cap's radius alone, made once per cell.
+  struct Cap
+  {
+    explicit Cap(double spread);
+    double Spread, HalfTangent2 = 0.0, Radial = 0.0, Kink = 0.0;
+  };
+  static double LobeBound(const Cap& cap, double nearAngle, double farAngle, double n);
+  static double DiffuseBound(const Cap& normals, double cosNear, double sinFar, bool terminator);
   static double SpecularBound(const Cell& cell, const Scene& scene, const View& view,
     const Vector& d, const Vector& toLight, const Halfway& halfway, double localView,
-    double farLight);
-  void AddPolygon(vtkIdType count, const vtkIdType* ids, vtkPoints* points, vtkDataArray* normals,
-    vtkBoundingBox& box);
+    bool gateCrosses);
+  void AddPolygon(vtkIdType count, const vtkIdType* ids, vtkPoints* points, vtkDataArray* normals);
 
   std::vector<Cell> Cells;
-  std::vector<Vector> CornerNormals, CornerPositions;        ///< AddPolygon's, reused
-  std::array<double, 4> Sphere = { { 0.0, 0.0, 0.0, 0.0 } }; ///< the points' bounding sphere
+  std::vector<Vector> CornerNormals, CornerPositions; ///< AddPolygon's, reused
   std::size_t Triangles = 0;
   std::size_t Points = 0;
   bool Unbounded = true;
+  Scene LastScene;                    ///< Bound's last scene, and its bounds
+  Bounds LastBounds = { -1.0, -1.0 }; ///< negative: none yet since Update
+  Bounds Compute(const Scene& scene) const;
   vtkMTimeType BuildTime = 0;
 };
 

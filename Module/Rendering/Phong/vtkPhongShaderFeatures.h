@@ -35,6 +35,7 @@ enum class vtkPhongFeature : unsigned char
   DebugPositionVC,
   Diffuse,
   DiffuseOrSpecular,
+  DiffusePerFragment, ///< with the sums per vertex, the directional diffuse sum per fragment
   Directional,
   Emission,
   GeometryPassThrough,

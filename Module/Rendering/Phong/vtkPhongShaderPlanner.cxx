@@ -17,6 +17,7 @@
 #include "vtkPhongProperty.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkShadowMapPass.h"
 #include "vtkPhongOpenGL.h"
 
 #include <algorithm>
@@ -171,9 +172,9 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   SetTermFeatures(terms, plan);
   SetLightFeatures(terms, allFeatures, plan);
   SetMaterialFeatures(terms, allFeatures, plan);
-  const bool budgetPerVertex = BudgetChoosesPerVertex(ren, actor, terms, state, options, plan);
+  const auto budgetMode = BudgetChoosesMode(ren, actor, terms, state, options, plan);
   const bool perVertex =
-    SetInterpolationFeatures(terms, state, geometryView, budgetPerVertex, ren, plan);
+    SetInterpolationFeatures(terms, state, geometryView, budgetMode, ren, plan);
   SetNormalFeatures(terms, state, perVertex, allFeatures, plan);
   if (this->InterpolatedDotLights == 0)
   {
@@ -388,27 +389,31 @@ void vtkPhongShaderPlanner::SetMaterialFeatures(const Terms& terms, bool allFeat
 }
 
 //------------------------------------------------------------------------------
-// Under an error budget, whether the surface's light sums go per vertex (vtkPhongErrorBudget):
-// a smooth surface (point normals that are VTK's, any interpolation but flat) under
-// directional lights only, in the final view, with what light culling left of the budget.
-bool vtkPhongShaderPlanner::BudgetChoosesPerVertex(vtkRenderer* ren, vtkActor* actor,
-  const Terms& terms, const PrimitiveState& state, const Options& options, Plan& plan)
+// Under an error budget, where the surface's light sums go (vtkPhongErrorBudget): per vertex
+// only on a smooth surface (point normals that are VTK's, any interpolation but flat) under
+// directional lights only, without vtkShadowMapPass (per-vertex sums cannot read its
+// factors), in the final view, with what light culling left of the budget.
+vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer* ren,
+  vtkActor* actor, const Terms& terms, const PrimitiveState& state, const Options& options,
+  Plan& plan)
 {
+  using Mode = vtkPhongGouraudBound::Mode;
   vtkPhongGouraudBound* triangles = state.Triangles;
   const bool smooth = state.HasPointNormals && !state.HasCellNormals && !state.NormalsFromShape &&
     !state.NormalsMayBeInvalid && !state.HasUserShaderCode && !state.HasGeometryShader &&
     plan.FrontMaterial->GetInterpolation() != VTK_FLAT;
+  vtkInformation* keys = actor->GetPropertyKeys();
+  const bool shadowed = keys && keys->Has(vtkShadowMapPass::ShadowMapPass());
   if (!triangles || !(options.ErrorBudget > 0.0) || options.DebugView != View::Final ||
-    !terms.LightSums || terms.PositionalAmbient || !smooth || !options.Specialize)
+    !terms.LightSums || terms.PositionalAmbient || !smooth || shadowed || !options.Specialize)
   {
-    return false;
+    return Mode::PerFragment;
   }
   double bound = 0.0;
-  const bool chosen = vtkPhongErrorBudget::ChoosePerVertex(ren, actor, plan, *triangles,
-    options.ErrorBudget - plan.ErrorBound, triangles->ChosePerVertex, bound);
-  triangles->ChosePerVertex = chosen;
-  plan.ErrorBound += chosen ? bound : 0.0;
-  return chosen;
+  triangles->Chosen = vtkPhongErrorBudget::ChooseMode(
+    ren, actor, plan, *triangles, options.ErrorBudget - plan.ErrorBound, triangles->Chosen, bound);
+  plan.ErrorBound += bound;
+  return triangles->Chosen;
 }
 
 //------------------------------------------------------------------------------
@@ -416,8 +421,8 @@ bool vtkPhongShaderPlanner::BudgetChoosesPerVertex(vtkRenderer* ren, vtkActor* a
 // surfaces with point normals, or where the error budget chose it), and the view and
 // sidedness. Returns whether per vertex.
 bool vtkPhongShaderPlanner::SetInterpolationFeatures(const Terms& terms,
-  const PrimitiveState& state, bool geometryView, bool budgetPerVertex, vtkRenderer* ren,
-  Plan& plan)
+  const PrimitiveState& state, bool geometryView, vtkPhongGouraudBound::Mode budgetMode,
+  vtkRenderer* ren, Plan& plan)
 {
   vtkPhongFeatureSet& features = plan.Features;
   vtkProperty* front = plan.FrontMaterial;
@@ -425,13 +430,15 @@ bool vtkPhongShaderPlanner::SetInterpolationFeatures(const Terms& terms,
   vtkCamera* camera = ren->GetActiveCamera();
   features.Set(Feature::Parallel, camera && camera->GetParallelProjection());
 
-  const bool perVertex = budgetPerVertex ||
+  const bool perVertex = budgetMode != vtkPhongGouraudBound::Mode::PerFragment ||
     (terms.LightSums && phongFront && phongFront->GetPerVertexGouraud() &&
       front->GetInterpolation() == VTK_GOURAUD && state.HasPointNormals &&
       !state.NormalsFromShape && !geometryView);
   features.Set(Feature::PerVertex, perVertex);
   features.Set(Feature::SumsPerVertex, terms.LightSums && perVertex);
   features.Set(Feature::SumsPerFragment, terms.LightSums && !perVertex);
+  features.Set(Feature::DiffusePerFragment,
+    terms.Diffuse && budgetMode == vtkPhongGouraudBound::Mode::SpecularPerVertex);
   features.Set(Feature::GeometryPassThrough, perVertex && state.HasGeometryShader);
   features.Set(Feature::TwoSided, ren->GetTwoSidedLighting() != 0);
   return perVertex;
@@ -448,7 +455,8 @@ void vtkPhongShaderPlanner::SetNormalFeatures(
   features.Set(Feature::DebugPositionVC, view == View::PositionVC);
 
   const bool normalView = view == View::ShadingNormal || view == View::NormalVC;
-  const bool shadingNormal = (terms.LightSums && !perVertex) || normalView;
+  const bool shadingNormal =
+    (terms.LightSums && !perVertex) || normalView || features.Has(Feature::DiffusePerFragment);
   features.Set(Feature::ShadingNormal, shadingNormal);
   features.Set(Feature::OneSided, shadingNormal && !features.Has(Feature::TwoSided));
   // Zero, NaN or infinite normals in the data take the face's geometric normal
@@ -479,11 +487,13 @@ void vtkPhongShaderPlanner::SetInterpolatedDotsFeature(
   const vtkPhongFeatureSet& features = plan.Features;
   const bool vertexNormal = state.HasPointNormals && !state.HasCellNormals &&
     !state.NormalsFromShape && !state.HasGeometryShader && !state.HasUserShaderCode;
+  // The per-fragment diffuse sum beside per-vertex specular sums takes N.L alone: any lobe.
+  const bool lobeFromDots = features.Has(Feature::DiffusePerFragment) ||
+    (features.Has(Feature::SumsPerFragment) && !features.Has(Feature::NarrowLobe) &&
+      !features.Has(Feature::LobeBlinn));
   plan.Features.Set(Feature::InterpolatedDots,
-    allowed && vertexNormal && !features.Has(Feature::NarrowLobe) &&
-      features.Has(Feature::SumsPerFragment) && features.Has(Feature::Directional) &&
-      !features.Has(Feature::NormalFallback) && !features.Has(Feature::LobeBlinn) &&
-      plan.DirectionalLights.size() <= maximumLights);
+    allowed && vertexNormal && lobeFromDots && features.Has(Feature::Directional) &&
+      !features.Has(Feature::NormalFallback) && plan.DirectionalLights.size() <= maximumLights);
 }
 
 //------------------------------------------------------------------------------

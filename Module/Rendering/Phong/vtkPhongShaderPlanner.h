@@ -19,7 +19,8 @@
 #ifndef vtkPhongShaderPlanner_h
 #define vtkPhongShaderPlanner_h
 
-#include "vtkPhongShaderPlan.h" // for the plan
+#include "vtkPhongGouraudBound.h" // for vtkPhongGouraudBound::Mode
+#include "vtkPhongShaderPlan.h"   // for the plan
 
 #include <cstddef> // for std::size_t
 #include <string>  // for std::string
@@ -83,10 +84,10 @@ private:
   static void SetLightFeatures(const Terms& terms, bool allFeatures, Plan& plan);
   static bool HasSeparateSpecularColors(const Terms& terms, bool allFeatures, const Plan& plan);
   static void SetMaterialFeatures(const Terms& terms, bool allFeatures, Plan& plan);
-  static bool BudgetChoosesPerVertex(vtkRenderer* ren, vtkActor* actor, const Terms& terms,
-    const PrimitiveState& state, const Options& options, Plan& plan);
+  static vtkPhongGouraudBound::Mode BudgetChoosesMode(vtkRenderer* ren, vtkActor* actor,
+    const Terms& terms, const PrimitiveState& state, const Options& options, Plan& plan);
   static bool SetInterpolationFeatures(const Terms& terms, const PrimitiveState& state,
-    bool geometryView, bool budgetPerVertex, vtkRenderer* ren, Plan& plan);
+    bool geometryView, vtkPhongGouraudBound::Mode budgetMode, vtkRenderer* ren, Plan& plan);
   static void SetNormalFeatures(
     const Terms& terms, const PrimitiveState& state, bool perVertex, bool allFeatures, Plan& plan);
   static void SetInterpolatedDotsFeature(

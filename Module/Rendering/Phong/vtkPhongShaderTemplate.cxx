@@ -299,11 +299,17 @@ void vtkPhongShaderTemplate::Substitute(
   const bool perVertex = plan.Has(Feature::SumsPerVertex);
   const std::string sums = this->Resolve(vtkPhongLightingLib, "Sums", plan);
   const std::string lights = this->Resolve(vtkPhongLightingLib, "Lights", plan);
+  const bool fragmentLights = !perVertex || plan.Has(Feature::DiffusePerFragment);
   this->SubstituteFragment(
-    shaders[vtkShader::Fragment], sums, perVertex ? std::string() : lights, plan);
+    shaders[vtkShader::Fragment], sums, fragmentLights ? lights : std::string(), plan);
   if (perVertex)
   {
-    this->SubstitutePerVertex(shaders, sums, lights, plan);
+    // The vertices light with the light directions themselves: the interpolated dot products
+    // are the fragments' inputs.
+    Plan vertexPlan = plan;
+    vertexPlan.Features.Set(Feature::InterpolatedDots, false);
+    this->SubstitutePerVertex(
+      shaders, sums, this->Resolve(vtkPhongLightingLib, "Lights", vertexPlan), plan);
   }
   if (plan.Has(Feature::InterpolatedDots))
   {

@@ -54,9 +54,11 @@ uniform vec3 phongEmissionBF;
 in vec3 phongAmbientLightVSOutput;
 //PHONG_ENDIF
 //PHONG_IF DIFFUSE
+//PHONG_IF !DIFFUSE_PER_FRAGMENT
 in vec3 phongDiffuseLightVSOutput;
 //PHONG_IF TWO_SIDED
 in vec3 phongDiffuseLightBFVSOutput;
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
@@ -155,7 +157,12 @@ in vec3 phongSpecularLightBFVSOutput;
   phongSums.ambient = phongAmbientLightVSOutput;
 //PHONG_ENDIF
 //PHONG_IF DIFFUSE
+//PHONG_IF !DIFFUSE_PER_FRAGMENT
   phongSums.diffuse = phongDiffuseLightVSOutput;
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE_PER_FRAGMENT
+  phongSums.diffuse = phongDirectionalDiffuse(phongNormalVC);
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
   phongSums.specular = phongSpecularLightVSOutput;
@@ -164,7 +171,9 @@ in vec3 phongSpecularLightBFVSOutput;
   if (gl_FrontFacing == false)
   {
 //PHONG_IF DIFFUSE
+//PHONG_IF !DIFFUSE_PER_FRAGMENT
     phongSums.diffuse = phongDiffuseLightBFVSOutput;
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
     phongSums.specular = phongSpecularLightBFVSOutput;

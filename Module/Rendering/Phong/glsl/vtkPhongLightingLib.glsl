@@ -219,6 +219,46 @@ float phongSpecularFromDots(float NdotL, float twoNdotV, float LdotV, float shin
 //PHONG_ENDIF
 //PHONG_ENDIF
 
+//PHONG_IF INTERPOLATED_DOTS
+// L_i.V and N.L_i of directional light i from the interpolated dot products.
+float phongDirectionalLdotV(int i)
+{
+//PHONG_IF PARALLEL
+  return phongDirectionalLightToLightVC[i].z;
+//PHONG_ENDIF
+//PHONG_IF !PARALLEL
+  return phongDirectionalPositionDotLVSOutput[i / 4][i % 4] * phongMinusInverseDistance;
+//PHONG_ENDIF
+}
+
+float phongDirectionalNdotL(int i, float LdotV)
+{
+  return phongDirectionalNormalDotLVSOutput[i / 4][i % 4] * phongInterpolatedNormalScale +
+    phongViewWeight * LdotV;
+}
+//PHONG_ENDIF
+//PHONG_IF DIFFUSE_PER_FRAGMENT
+
+// The directional lights' diffuse sum at a fragment with shading normal N (unit), while the
+// other sums come from the vertices: interpolated, max(N.L, 0) would cost the terminator's
+// kink (vtkPhongGouraudBound).
+vec3 phongDirectionalDiffuse(vec3 N)
+{
+  vec3 diffuse = vec3(0.0);
+  for (int i = 0; i < @DIRECTIONAL_COUNT@; ++i) // unrolled up to 64 lights (vtkPhongShaderTemplate)
+  {
+//PHONG_IF INTERPOLATED_DOTS
+    float NdotL = phongDirectionalNdotL(i, phongDirectionalLdotV(i));
+//PHONG_ENDIF
+//PHONG_IF !INTERPOLATED_DOTS
+    float NdotL = dot(N, phongDirectionalLightToLightVC[i]);
+//PHONG_ENDIF
+    diffuse += phongDirectionalLightDiffuse[i] * max(NdotL, 0.0);
+  }
+  return diffuse;
+}
+//PHONG_ENDIF
+
 //PHONG_IF LIGHT_SUMS
 // Sums the switched-on lights at a surface point with shading normal N (unit)
 // and unit vector V towards the eye.
@@ -248,14 +288,8 @@ phongLightSums phongSumLights(vec3 positionVC, vec3 N, vec3 V, float shininess)
     float NdotL = dot(N, L);
 //PHONG_ENDIF
 //PHONG_IF INTERPOLATED_DOTS
-//PHONG_IF PARALLEL
-    float LdotV = phongDirectionalLightToLightVC[i].z;
-//PHONG_ENDIF
-//PHONG_IF !PARALLEL
-    float LdotV = phongDirectionalPositionDotLVSOutput[i / 4][i % 4] * phongMinusInverseDistance;
-//PHONG_ENDIF
-    float NdotL = phongDirectionalNormalDotLVSOutput[i / 4][i % 4] * phongInterpolatedNormalScale +
-      phongViewWeight * LdotV;
+    float LdotV = phongDirectionalLdotV(i);
+    float NdotL = phongDirectionalNdotL(i, LdotV);
 //PHONG_ENDIF
 //PHONG_IF SHADOW_MAPS
     float shadow = phongShadowFactors[phongDirectionalLightShadow[i]];

@@ -5,9 +5,11 @@
 // //PHONG_IF template rules as vtkPhongLightingLib.glsl). VTK's Normal::Impl
 // and PositionVC::Impl have set normalVCVSOutput and vertexVCVSOutput.
 //
-// The sections Dots* are for per-fragment lighting instead: they evaluate at each vertex the
-// directional lights' dot products that interpolate exactly (INTERPOLATED_DOTS in
-// vtkPhongLightingLib.glsl).
+// With DIFFUSE_PER_FRAGMENT the directional diffuse sum is left to the fragments.
+//
+// The sections Dots* are for per-fragment lighting instead (or that diffuse sum): they
+// evaluate at each vertex the directional lights' dot products that interpolate exactly
+// (INTERPOLATED_DOTS in vtkPhongLightingLib.glsl).
 //============================================================================
 
 //PHONG_SECTION Dec
@@ -21,9 +23,11 @@ uniform float phongShininessBF; // the back material's n
 out vec3 phongAmbientLightVSOutput;
 //PHONG_ENDIF
 //PHONG_IF DIFFUSE
+//PHONG_IF !DIFFUSE_PER_FRAGMENT
 out vec3 phongDiffuseLightVSOutput;
 //PHONG_IF TWO_SIDED
 out vec3 phongDiffuseLightBFVSOutput;
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
@@ -56,7 +60,9 @@ out vec3 phongSpecularLightBFVSOutput;
   phongAmbientLightVSOutput = phongFront.ambient;
 //PHONG_ENDIF
 //PHONG_IF DIFFUSE
+//PHONG_IF !DIFFUSE_PER_FRAGMENT
   phongDiffuseLightVSOutput = phongFront.diffuse;
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
   phongSpecularLightVSOutput = phongFront.specular;
@@ -71,7 +77,9 @@ out vec3 phongSpecularLightBFVSOutput;
   phongLightSums phongBack = phongSumLights(vertexVCVSOutput.xyz, -phongNormalVC, phongViewVC, 0.0);
 //PHONG_ENDIF
 //PHONG_IF DIFFUSE
+//PHONG_IF !DIFFUSE_PER_FRAGMENT
   phongDiffuseLightBFVSOutput = phongBack.diffuse;
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SPECULAR
   phongSpecularLightBFVSOutput = phongBack.specular;
@@ -80,7 +88,9 @@ out vec3 phongSpecularLightBFVSOutput;
 //PHONG_ENDIF
 
 //PHONG_SECTION DotsDec
-uniform vec3 phongDirectionalLightToLightVC[@DIRECTIONAL_COUNT@]; // unit L_i
+//PHONG_IF !SUMS_PER_VERTEX
+uniform vec3 phongDirectionalLightToLightVC[@DIRECTIONAL_COUNT@]; // unit L_i (else in Lights)
+//PHONG_ENDIF
 out vec4 phongDirectionalNormalDotLVSOutput[@DIRECTIONAL_VEC4_COUNT@];
 //PHONG_IF !PARALLEL
 out vec4 phongDirectionalPositionDotLVSOutput[@DIRECTIONAL_VEC4_COUNT@];
