@@ -19,6 +19,7 @@
 //    The same shells as blocks of a multiblock through the composite mappers (ParaView's Phong
 //    Surface and Surface).
 // 4. --only kinds: every light kind at 1, 8 and 32 lights on the sphere and the meshes given.
+// 5. Frame time against the error budget: stock, exact, budgets 0.5, 1 and 3 levels.
 //
 // On llvmpipe fragment work runs on the CPU, so shader cost shows in these
 // times. --quick shrinks everything so ctest can check the program runs.
@@ -33,6 +34,7 @@
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPhongCompositePolyDataMapper.h"
+#include "vtkPhongGouraudBound.h"
 #include "vtkPhongOFFReader.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
@@ -1015,11 +1017,146 @@ void CullingSection(bool quick)
   std::fflush(stdout);
 }
 
+// The error budget's planner: binning the triangles once per upload, and the bound per frame
+// (vtkPhongGouraudBound) with the eye moving (every frame computes) or still (remembered),
+// under 1 and 8 directional lights, two-sided, Blinn 30, perspective.
+void PlannerCost(
+  const std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>>& meshes, bool quick)
+{
+  std::printf("\n== The error budget's planner (ms) ==\n");
+  std::printf("%-22s %10s %12s %12s %12s\n", "mesh", "binning", "1 light", "8 lights", "8, still");
+  const int calls = quick ? 5 : 200;
+  for (const auto& mesh : meshes)
+  {
+    vtkPhongGouraudBound bound;
+    auto start = Clock::now();
+    bound.Update({ mesh.second.GetPointer() }, 1);
+    const double binning = Seconds(start);
+    double perCall[3];
+    for (int which = 0; which < 3; ++which)
+    {
+      vtkPhongGouraudBound::Scene scene;
+      scene.Parallel = false;
+      scene.Shininess = 30.0;
+      const int lights = which == 0 ? 1 : 8;
+      for (int i = 0; i < lights; ++i)
+      {
+        const double angle = 6.283185307 * i / lights;
+        vtkPhongGouraudBound::Scene::Light light;
+        light.ToLightMC = { { std::cos(angle) / std::sqrt(2.0), std::sin(angle) / std::sqrt(2.0),
+          1.0 / std::sqrt(2.0) } };
+        light.Diffuse = 0.24;
+        light.Specular = 0.15;
+        scene.Lights.push_back(light);
+      }
+      start = Clock::now();
+      for (int call = 0; call < calls; ++call)
+      {
+        const double turn = which == 2 ? 0.0 : 0.01 * call; // radians about y
+        scene.EyeMC = { { 5.0 * std::sin(turn), 0.0, 5.0 * std::cos(turn) } };
+        bound.Bound(scene);
+      }
+      perCall[which] = Seconds(start) / calls;
+    }
+    std::printf("%-22s %10.1f %12.3f %12.3f %12.4f\n", mesh.first.c_str(), 1e3 * binning,
+      1e3 * perCall[0], 1e3 * perCall[1], 1e3 * perCall[2]);
+  }
+  std::printf("(binning: once per upload; the others per frame and actor, the eye turning or "
+              "still)\n");
+}
+
+// The mode a vtkPhong mapper's last plan chose under its error budget.
+const char* BudgetMode(vtkPhongPolyDataMapper* mapper)
+{
+  const std::string signature = mapper->GetLastShaderSignature();
+  if (signature.find("PER_VERTEX") == std::string::npos)
+  {
+    return "fragment";
+  }
+  return signature.find("DIFFUSE_PER_FRAGMENT") != std::string::npos ? "specular" : "vertex";
+}
+
+// What the error budget buys (vtkPhongPolyDataMapper::SetErrorBudget): stock, exact vtkPhong
+// and vtkPhong under budgets of 0.5, 1 and 3 levels on the sphere and each mesh given, under
+// the kinds section's light sets of 1 and 8 lights; the materials of that section, Blinn-Phong
+// for vtkPhong. Each budget's column: ms, the mode it chose (fragment: exact; specular: the
+// specular sums per vertex; vertex: every sum) and its bound in levels.
+void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
+{
+  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
+  const double budgets[] = { 0.5, 1.0, 3.0 };
+  std::printf("\n== Frame time against the error budget (%dx%d; ms) ==\n", width, height);
+  std::printf("%-22s %-15s %8s %8s", "mesh", "lights", "stock", "exact");
+  for (double budget : budgets)
+  {
+    std::printf(" %22s", ("budget " + std::to_string(budget).substr(0, 3)).c_str());
+  }
+  std::printf(" %8s %8s %8s %8s\n", "1/stock", "1/exact", "0.5/exa", "3/stock");
+  std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> meshes;
+  meshes.emplace_back("sphere 256", Sphere(quick ? 32 : 256));
+  for (const auto& file : meshFiles)
+  {
+    meshes.push_back(MeshWithNormals(file));
+  }
+  const std::vector<std::string> sets = quick
+    ? std::vector<std::string>{ "8 directional" }
+    : std::vector<std::string>{ "1 directional", "8 directional", "8 point", "8 spot", "8 mixed" };
+  for (const auto& mesh : meshes)
+  {
+    View view(width, height);
+    auto actors = MakeContenders(mesh.second, VTK_PHONG, false, view.Renderer);
+    actors[Unlit]->VisibilityOff();
+    actors[OursAllFeatures]->VisibilityOff();
+    vtkNew<vtkPhongProperty> blinn;
+    blinn->DeepCopy(actors[Ours]->GetProperty());
+    blinn->SetLightingModelToBlinnPhong();
+    actors[Ours]->SetProperty(blinn);
+    Contest contest{ view.Window, view.Renderer, quick ? 2 : 5, quick ? 1 : 3,
+      { actors[Stock], actors[Ours] } };
+    std::vector<vtkPhongPolyDataMapper*> budgeted;
+    for (double budget : budgets)
+    {
+      auto mapper = vtkSmartPointer<vtkPhongPolyDataMapper>::New();
+      mapper->SetInputData(mesh.second);
+      mapper->SetErrorBudget(budget);
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->SetProperty(blinn);
+      view.Renderer->AddActor(actor);
+      contest.Actors.push_back(actor);
+      budgeted.push_back(mapper);
+    }
+    view.Frame(mesh.second);
+    for (const std::string& set : sets)
+    {
+      SetLights(view.Renderer, set);
+      const auto t = contest.Run();
+      std::printf("%-22s %-15s %8.2f %8.2f", set == sets.front() ? mesh.first.c_str() : "",
+        set.c_str(), 1e3 * t[0], 1e3 * t[1]);
+      for (std::size_t b = 0; b < budgeted.size(); ++b)
+      {
+        std::printf(" %8.2f %-8s %4.2f", 1e3 * t[2 + b], BudgetMode(budgeted[b]),
+          std::min(budgeted[b]->GetErrorBound(), 9.99));
+      }
+      PrintRatio(t[3], t[0]);
+      PrintRatio(t[3], t[1]);
+      PrintRatio(t[2], t[1]);
+      PrintRatio(t[4], t[0]);
+      std::printf("\n");
+      std::fflush(stdout);
+    }
+  }
+  std::printf("(each budget: ms, mode, bound in levels; fragment = exact shaders, specular = "
+              "the specular sums per vertex and the diffuse per fragment, vertex = every sum "
+              "per vertex; ratios: budget 1 to stock and to exact, 0.5 to exact, 3 to stock)\n");
+  PlannerCost(meshes, quick);
+}
+
 int main(int argc, char* argv[])
 {
   std::vector<std::string> meshFiles;
   bool quick = false;
-  std::string only; // one section: shaders, lights, interpolation, meshes, culling
+  std::string only; // one section: shaders, lights, interpolation, meshes, culling, ...
   for (int i = 1; i < argc; ++i)
   {
     if (std::strcmp(argv[i], "--quick") == 0)
@@ -1033,7 +1170,7 @@ int main(int argc, char* argv[])
     else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
     {
       std::printf("usage: %s [MESH.off ...] [--quick] [--only shaders|lights|interpolation|"
-                  "meshes|culling|shells|kinds]\n",
+                  "meshes|culling|shells|kinds|budget]\n",
         argv[0]);
       return 0;
     }
@@ -1071,6 +1208,10 @@ int main(int argc, char* argv[])
   if (only == "kinds" || (only.empty() && quick))
   {
     KindSection(meshFiles, quick); // about 10 minutes in full: not in the default run
+  }
+  if (wanted("budget"))
+  {
+    BudgetSection(meshFiles, quick);
   }
   return 0;
 }

@@ -52,6 +52,8 @@ struct Options
   double Settle = 0.0; // seconds of frames drawn, not timed, between the first and the steady
   std::string PrePass = "auto"; // vtkPhong's depth pre-pass: auto, on, off
   bool ClosedSurfaceCulling = true;
+  bool InterpolatedDots = true; // vtkPhong's InterpolatedDotProducts
+  double ErrorBudget = 0.0;     // vtkPhong's ErrorBudget, levels
 };
 
 // A /proc/self/status field in MB (VmRSS: resident now, VmHWM: the peak so far).
@@ -133,6 +135,10 @@ bool Parse(int argc, char* argv[], Options& options)
       options.PrePass = value;
     else if (key == "--closed-culling")
       options.ClosedSurfaceCulling = value == "on";
+    else if (key == "--dots")
+      options.InterpolatedDots = value == "on";
+    else if (key == "--budget")
+      options.ErrorBudget = std::stod(value);
     else
       return false;
   }
@@ -170,7 +176,7 @@ int main(int argc, char* argv[])
     std::fprintf(stderr,
       "usage: vtkPhongBigMeshFrame --mesh sphere|terrain --triangles N --normals yes|no "
       "--mapper stock|phong [--size 800] [--frames 5] [--prepass auto|on|off] "
-      "[--closed-culling on|off] [--settle SECONDS]\n");
+      "[--closed-culling on|off] [--dots on|off] [--budget LEVELS] [--settle SECONDS]\n");
     return 2;
   }
   vtkSmartPointer<vtkPolyData> mesh = options.Mesh == "sphere"
@@ -189,6 +195,8 @@ int main(int argc, char* argv[])
         : (options.PrePass == "on" ? vtkPhongPolyDataMapper::DepthPrePassOn
                                    : vtkPhongPolyDataMapper::DepthPrePassAutomatic));
     phong->SetClosedSurfaceCulling(options.ClosedSurfaceCulling);
+    phong->SetInterpolatedDotProducts(options.InterpolatedDots);
+    phong->SetErrorBudget(options.ErrorBudget);
     mapper = phong.Get();
   }
   else
