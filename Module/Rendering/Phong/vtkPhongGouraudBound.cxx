@@ -340,16 +340,9 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene) c
         halfways[i] = MakeHalfway(scene, view, scene.Lights[i].ToLightMC);
       }
     }
-    for (double side : { 1.0, -1.0 })
-    {
-      if (side < 0.0 && !scene.TwoSided)
-      {
-        continue;
-      }
-      const Bounds bounds = CellBound(cell, scene, view, halfways, side);
-      largest.PerVertex = std::max(largest.PerVertex, bounds.PerVertex);
-      largest.SpecularPerVertex = std::max(largest.SpecularPerVertex, bounds.SpecularPerVertex);
-    }
+    const Bounds bounds = CellBound(cell, scene, view, halfways);
+    largest.PerVertex = std::max(largest.PerVertex, bounds.PerVertex);
+    largest.SpecularPerVertex = std::max(largest.SpecularPerVertex, bounds.SpecularPerVertex);
   }
   return largest;
 }
@@ -365,9 +358,14 @@ vtkPhongGouraudBound::Halfway vtkPhongGouraudBound::MakeHalfway(
   {
     return halfway;
   }
-  halfway.Least = 2.0 * std::cos(0.5 * std::min(Angle(toLight, view.Centre) + view.Spread, Pi));
+  // |L + V| = 2 cos(g/2) and |L - V| = 2 sin(g/2) for the angle g between them; at its least
+  // over the view cone |L + V| = 2 cos((g + spread)/2), 0 once that passes pi.
   halfway.Direction = { { toLight[0] + view.Centre[0], toLight[1] + view.Centre[1],
     toLight[2] + view.Centre[2] } };
+  const Vector difference = { { toLight[0] - view.Centre[0], toLight[1] - view.Centre[1],
+    toLight[2] - view.Centre[2] } };
+  halfway.Least = std::max(
+    Norm(halfway.Direction) * view.CosHalfSpread - Norm(difference) * view.SinHalfSpread, 0.0);
   const bool opposite = !Normalize(halfway.Direction);
   halfway.LobeZero = scene.Parallel && opposite; // L = -V everywhere: the lobe is 0
   // H turns without bound as V does.
@@ -398,18 +396,19 @@ bool vtkPhongGouraudBound::MakeView(const Scene& scene, const Cell& cell, View& 
     return false; // the eye inside or at the cell's ball: V takes every direction
   }
   view.Spread = std::asin(radius / distance);
+  view.CosHalfSpread = std::cos(0.5 * view.Spread);
+  view.SinHalfSpread = std::sin(0.5 * view.Spread);
   view.Nearest = distance - radius;
   return true;
 }
 
 //------------------------------------------------------------------------------
-// Every triangle of the cell, on one side (1: as is; -1: reversed, two-sided back faces). The
+// Every triangle of the cell, on each side (as is; reversed: two-sided back faces). The
 // angles between the light and the cell's normals, [toLight - width, toLight + width], go by
 // their cosines and sines (no arctangent per light and cell: this runs per frame).
-vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, const Scene& scene,
-  const View& view, const std::vector<Halfway>& halfways, double side)
+vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(
+  const Cell& cell, const Scene& scene, const View& view, const std::vector<Halfway>& halfways)
 {
-  const Vector d = { { side * cell.Axis[0], side * cell.Axis[1], side * cell.Axis[2] } };
   const double width = cell.Cone + cell.Spread; // normals' angles around d
   const double cosWidth = std::cos(width), sinWidth = std::sin(width);
   // The view vector's spread over one triangle (0 in parallel projection).
@@ -418,33 +417,44 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, c
                                           : Infinite;
   const Cap normals(cell.Spread);
   const double cosGateOpen = std::sin(1.0e-3); // cos(pi/2 - 1e-3)
-  double diffuse = 0.0, specular = 0.0;
-  for (std::size_t i = 0; i < scene.Lights.size(); ++i)
+  Bounds largest = { 0.0, 0.0 };
+  for (double side : { 1.0, -1.0 })
   {
-    const Scene::Light& light = scene.Lights[i];
-    const double c = std::min(std::max(Dot(d, light.ToLightMC), -1.0), 1.0); // cos(toLight)
-    const double s = std::sqrt(1.0 - c * c);
-    const bool wide = width >= HalfPi;
-    if (!wide && c <= -sinWidth)
+    if (side < 0.0 && !scene.TwoSided)
     {
-      continue; // every normal faces away (near angle >= pi/2): no diffuse, the gate shut
+      break;
     }
-    const double cosNear = c >= cosWidth ? 1.0 : c * cosWidth + s * sinWidth;
-    // cos(toLight + width), or -1 once the far angle would pass pi.
-    const double cosFar =
-      wide || c * sinWidth + s * cosWidth < 0.0 ? -1.0 : c * cosWidth - s * sinWidth;
-    const double sinFar = cosFar <= 0.0 ? 1.0 : s * cosWidth + c * sinWidth; // of min(far, pi/2)
-    diffuse += light.Diffuse * DiffuseBound(normals, cosNear, sinFar, cosFar <= 0.0);
-    if (light.Specular > 0.0)
+    const Vector d = { { side * cell.Axis[0], side * cell.Axis[1], side * cell.Axis[2] } };
+    double diffuse = 0.0, specular = 0.0;
+    for (std::size_t i = 0; i < scene.Lights.size(); ++i)
     {
-      specular += light.Specular *
-        SpecularBound(
-          cell, scene, view, d, light.ToLightMC, halfways[i], localView, cosFar <= cosGateOpen);
+      const Scene::Light& light = scene.Lights[i];
+      const double c = std::min(std::max(Dot(d, light.ToLightMC), -1.0), 1.0); // cos(toLight)
+      const double s = std::sqrt(1.0 - c * c);
+      const bool wide = width >= HalfPi;
+      if (!wide && c <= -sinWidth)
+      {
+        continue; // every normal faces away (near angle >= pi/2): no diffuse, the gate shut
+      }
+      const double cosNear = c >= cosWidth ? 1.0 : c * cosWidth + s * sinWidth;
+      // cos(toLight + width), or -1 once the far angle would pass pi.
+      const double cosFar =
+        wide || c * sinWidth + s * cosWidth < 0.0 ? -1.0 : c * cosWidth - s * sinWidth;
+      const double sinFar = cosFar <= 0.0 ? 1.0 : s * cosWidth + c * sinWidth; // of min(far, pi/2)
+      diffuse += light.Diffuse * DiffuseBound(normals, cosNear, sinFar, cosFar <= 0.0);
+      if (light.Specular > 0.0)
+      {
+        specular += light.Specular *
+          SpecularBound(
+            cell, scene, view, d, light.ToLightMC, halfways[i], localView, cosFar <= cosGateOpen);
+      }
     }
+    // NaN, from a degenerate input, bounds nothing.
+    const auto bounded = [](double value) { return value >= 0.0 ? value : Infinite; };
+    largest.PerVertex = std::max(largest.PerVertex, bounded(diffuse + specular));
+    largest.SpecularPerVertex = std::max(largest.SpecularPerVertex, bounded(specular));
   }
-  // NaN, from a degenerate input, bounds nothing.
-  const auto bounded = [](double value) { return value >= 0.0 ? value : Infinite; };
-  return { bounded(diffuse + specular), bounded(specular) };
+  return largest;
 }
 
 //------------------------------------------------------------------------------
@@ -475,25 +485,32 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   // vector (which turns twice as far as N) against V.
   double centre, width, spread, scale = 1.0;
   const double n = scene.Shininess;
+  // The lobe's axis, and the direction its angle is measured from.
+  Vector axis = halfway.Direction, from = d;
   if (scene.Blinn)
   {
     if (halfway.LobeZero || halfway.Unbounded)
     {
       return halfway.LobeZero ? 0.0 : Infinite;
     }
-    centre = Angle(d, halfway.Direction);
     width = cell.Cone + cell.Spread + view.Spread / halfway.Least;
     spread = cell.Spread + localView / halfway.Least;
   }
   else
   {
     const double c = Dot(d, toLight);
-    const Vector r = { { 2.0 * c * d[0] - toLight[0], 2.0 * c * d[1] - toLight[1],
+    from = { { 2.0 * c * d[0] - toLight[0], 2.0 * c * d[1] - toLight[1],
       2.0 * c * d[2] - toLight[2] } };
-    centre = Angle(r, view.Centre);
+    axis = view.Centre;
     width = 2.0 * (cell.Cone + cell.Spread) + view.Spread;
     spread = 2.0 * cell.Spread + localView;
   }
+  // Most cells lie beyond the lobe: told by a cosine, before any angle is taken.
+  if (view.LobeCut + width < Pi && Dot(from, axis) <= std::cos(view.LobeCut + width))
+  {
+    return NegligibleLobe;
+  }
+  centre = Angle(from, axis);
   if (!scene.Parallel)
   {
     scale = FirstOrderMargin;

@@ -140,6 +140,7 @@ private:
     double Spread = 0.0;
     double Nearest = 0.0;
     double LobeCut = 0.0; ///< the angle from the lobe's axis past which it is negligible
+    double CosHalfSpread = 1.0, SinHalfSpread = 0.0; ///< of Spread / 2
   };
   /// Blinn's halfway vector for one light over the view cone (unused for Phong).
   struct Halfway
@@ -151,8 +152,8 @@ private:
   };
   static bool MakeView(const Scene& scene, const Cell& cell, View& view);
   static Halfway MakeHalfway(const Scene& scene, const View& view, const Vector& toLight);
-  static Bounds CellBound(const Cell& cell, const Scene& scene, const View& view,
-    const std::vector<Halfway>& halfways, double side);
+  static Bounds CellBound(
+    const Cell& cell, const Scene& scene, const View& view, const std::vector<Halfway>& halfways);
   /// The terms of LobeBound that depend on the cap's radius alone, made once per cell.
   struct Cap
   {
