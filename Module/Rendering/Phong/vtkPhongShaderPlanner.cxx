@@ -4,9 +4,11 @@
 #include "vtkCamera.h"
 #include "vtkCollectionIterator.h"
 #include "vtkInformation.h"
+#include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightingMapPass.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkPhongErrorBudget.h"
 #include "vtkPhongGouraudBound.h"
 #include "vtkPhongLightCulling.h"
@@ -402,8 +404,7 @@ vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer*
   const bool smooth = state.HasPointNormals && !state.HasCellNormals && !state.NormalsFromShape &&
     !state.NormalsMayBeInvalid && !state.HasUserShaderCode && !state.HasGeometryShader &&
     plan.FrontMaterial->GetInterpolation() != VTK_FLAT;
-  vtkInformation* keys = actor->GetPropertyKeys();
-  const bool shadowed = keys && keys->Has(vtkShadowMapPass::ShadowMapPass());
+  const bool shadowed = DrawnUnderShadowMaps(actor);
   if (!triangles || !(options.ErrorBudget > 0.0) || options.DebugView != View::Final ||
     !terms.LightSums || terms.PositionalAmbient || !smooth || shadowed || !options.Specialize)
   {
@@ -414,6 +415,23 @@ vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer*
     ren, actor, plan, *triangles, options.ErrorBudget - plan.ErrorBound, triangles->Chosen, bound);
   plan.ErrorBound += bound;
   return triangles->Chosen;
+}
+
+//------------------------------------------------------------------------------
+// vtkShadowMapPass lists itself in each prop's render passes while it draws them.
+bool vtkPhongShaderPlanner::DrawnUnderShadowMaps(vtkActor* actor)
+{
+  vtkInformation* keys = actor->GetPropertyKeys();
+  vtkInformationObjectBaseVectorKey* passes = vtkOpenGLRenderPass::RenderPasses();
+  const int count = keys && keys->Has(passes) ? keys->Length(passes) : 0;
+  for (int i = 0; i < count; ++i)
+  {
+    if (vtkShadowMapPass::SafeDownCast(keys->Get(passes, i)))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------

@@ -84,6 +84,7 @@ private:
   static void SetLightFeatures(const Terms& terms, bool allFeatures, Plan& plan);
   static bool HasSeparateSpecularColors(const Terms& terms, bool allFeatures, const Plan& plan);
   static void SetMaterialFeatures(const Terms& terms, bool allFeatures, Plan& plan);
+  static bool DrawnUnderShadowMaps(vtkActor* actor);
   static vtkPhongGouraudBound::Mode BudgetChoosesMode(vtkRenderer* ren, vtkActor* actor,
     const Terms& terms, const PrimitiveState& state, const Options& options, Plan& plan);
   static bool SetInterpolationFeatures(const Terms& terms, const PrimitiveState& state,

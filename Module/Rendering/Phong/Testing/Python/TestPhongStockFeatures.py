@@ -336,10 +336,13 @@ def coincident_topology(scene):
     finish(scene)
 
 
-def shadow_scene(scene, lights):
+def shadow_scene(scene, lights, budget=0.0):
     """VTK's TestShadowMapPass in small: a plane, a few objects, scene lights that cast
-    shadows, drawn through vtkShadowMapPass."""
+    shadows, drawn through vtkShadowMapPass (vtkPhong's mappers under `budget` levels)."""
     shadow_scene_geometry(scene)
+    for mapper in scene.mappers:
+        if hasattr(mapper, "SetErrorBudget"):
+            mapper.SetErrorBudget(budget)
     scene.renderer.AutomaticLightCreationOff()
     lights(scene.renderer)
     shadows = vtkShadowMapPass()
@@ -391,6 +394,13 @@ def shadows_directional(scene):
 
 def shadows_mixed(scene):
     shadow_scene(scene, shadow_mixed)
+
+
+def shadows_budget(scene):
+    """An error budget under directional lights would light the plane per vertex (its normals
+    are equal: the bound is 0), where the pass's factors cannot be read: vtkPhong must stay
+    per fragment, shadows and all."""
+    shadow_scene(scene, shadow_directional, budget=2.0)
 
 
 def ssao(scene):
@@ -699,6 +709,7 @@ CASES = [
      ("stock VTK pairs the pass's factor of the i-th light of the renderer with its i-th "
       "switched-on light: past a switched-off light, a light loses its shadow", 1900)),
     ("vtkShadowMapPass, composite mapper", shadows_composite, "match"),
+    ("vtkShadowMapPass, directional lights, error budget 2 levels", shadows_budget, "match"),
     ("vtkSSAOPass", ssao, "match"),
     ("depth peeling", depth_peeling, "match"),
     ("translucency without depth peeling (OIT)", translucency_oit, "match"),
