@@ -366,9 +366,12 @@ bool RunRandom(int count, unsigned seed, vtkPolyData* bunny)
             << " per fragment, " << chosen[SpecularPerVertex] << " specular per vertex, "
             << chosen[PerVertex] << " per vertex; " << excused
             << " pixels excused (the exact mode strays there too)\n";
-  if (count >= 20 && (chosen[PerVertex] == 0 || chosen[SpecularPerVertex] == 0))
+  // A long sweep must reach both per-vertex modes (about 1 and 5 scenes in 100 take them;
+  // the fixed cases above expect each mode by name).
+  const bool reached = count < 500 || (chosen[PerVertex] > 0 && chosen[SpecularPerVertex] > 0);
+  if (!reached)
   {
-    std::cerr << "the random scenes never chose a per-vertex mode\n";
+    std::cerr << "the random scenes did not reach the per-vertex modes\n";
     ok = false;
   }
   return ok;
