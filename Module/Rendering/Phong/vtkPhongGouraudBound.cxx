@@ -215,9 +215,9 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
     for (int k = 0; k < 3; ++k)
     {
       diagonal[k] = cell.High[k] - cell.Low[k];
-      cell.Low[k] = 0.5 * (cell.Low[k] + cell.High[k]);
+      cell.Centre[k] = 0.5 * (cell.Low[k] + cell.High[k]);
     }
-    cell.High[0] = 0.5 * Norm(diagonal);
+    cell.Reach = 0.5 * Norm(diagonal);
   }
   if (this->Unbounded)
   {
@@ -387,10 +387,10 @@ bool vtkPhongGouraudBound::MakeView(const Scene& scene, const Cell& cell, View& 
   }
   for (int k = 0; k < 3; ++k)
   {
-    view.Centre[k] = scene.EyeMC[k] - cell.Low[k];
+    view.Centre[k] = scene.EyeMC[k] - cell.Centre[k];
   }
   const double distance = Norm(view.Centre);
-  const double radius = cell.High[0];
+  const double radius = cell.Reach;
   if (!(distance > 1.01 * radius) || !Normalize(view.Centre))
   {
     return false; // the eye inside or at the cell's ball: V takes every direction
@@ -411,6 +411,7 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(
 {
   const double width = cell.Cone + cell.Spread; // normals' angles around d
   const double cosWidth = std::cos(width), sinWidth = std::sin(width);
+  const bool wide = width >= HalfPi;
   // The view vector's spread over one triangle (0 in parallel projection).
   const double localView = scene.Parallel ? 0.0
     : cell.Radius < view.Nearest          ? std::asin(cell.Radius / view.Nearest)
@@ -431,7 +432,6 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(
       const Scene::Light& light = scene.Lights[i];
       const double c = std::min(std::max(Dot(d, light.ToLightMC), -1.0), 1.0); // cos(toLight)
       const double s = std::sqrt(1.0 - c * c);
-      const bool wide = width >= HalfPi;
       if (!wide && c <= -sinWidth)
       {
         continue; // every normal faces away (near angle >= pi/2): no diffuse, the gate shut

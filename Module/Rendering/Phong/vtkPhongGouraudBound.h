@@ -130,8 +130,9 @@ private:
     double Spread = 0.0; ///< largest cap radius
     double Radius = 0.0; ///< largest triangle radius
     std::size_t Count = 0;
-    /// The box of its points while Update bins; then the ball holding them (centre, radius).
-    Vector Low = { { Huge, Huge, Huge } }, High = { { -Huge, -Huge, -Huge } };
+    Vector Low = { { Huge, Huge, Huge } }, High = { { -Huge, -Huge, -Huge } }; ///< points' box
+    Vector Centre = { { 0.0, 0.0, 0.0 } }; ///< of the ball holding its points (from the box)
+    double Reach = 0.0;                    ///< that ball's radius
   };
   /// The view vector over the whole surface: a cone, and the eye's least distance.
   struct View

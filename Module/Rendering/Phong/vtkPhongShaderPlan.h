@@ -40,6 +40,14 @@ struct vtkPhongPrimitiveState
   bool DrawingSelection = false;  ///< the selection-highlight pass
   /// the triangles binned for the error budget's per-vertex bound; null without a budget
   vtkPhongGouraudBound* Triangles = nullptr;
+
+  /// Whether the shading normal is VTK's interpolated point normal: point normals, and no cell
+  /// normals, impostors, geometry shader or shader code of the user's that may change it.
+  bool ShadesWithPointNormals() const
+  {
+    return this->HasPointNormals && !this->HasCellNormals && !this->NormalsFromShape &&
+      !this->HasGeometryShader && !this->HasUserShaderCode;
+  }
 };
 
 /**

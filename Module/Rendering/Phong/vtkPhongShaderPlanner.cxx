@@ -401,8 +401,7 @@ vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer*
 {
   using Mode = vtkPhongGouraudBound::Mode;
   vtkPhongGouraudBound* triangles = state.Triangles;
-  const bool smooth = state.HasPointNormals && !state.HasCellNormals && !state.NormalsFromShape &&
-    !state.NormalsMayBeInvalid && !state.HasUserShaderCode && !state.HasGeometryShader &&
+  const bool smooth = state.ShadesWithPointNormals() && !state.NormalsMayBeInvalid &&
     plan.FrontMaterial->GetInterpolation() != VTK_FLAT;
   const bool shadowed = DrawnUnderShadowMaps(actor);
   if (!triangles || !(options.ErrorBudget > 0.0) || options.DebugView != View::Final ||
@@ -503,15 +502,14 @@ void vtkPhongShaderPlanner::SetInterpolatedDotsFeature(
   const PrimitiveState& state, bool allowed, std::size_t maximumLights, Plan& plan)
 {
   const vtkPhongFeatureSet& features = plan.Features;
-  const bool vertexNormal = state.HasPointNormals && !state.HasCellNormals &&
-    !state.NormalsFromShape && !state.HasGeometryShader && !state.HasUserShaderCode;
   // The per-fragment diffuse sum beside per-vertex specular sums takes N.L alone: any lobe.
   const bool lobeFromDots = features.Has(Feature::DiffusePerFragment) ||
     (features.Has(Feature::SumsPerFragment) && !features.Has(Feature::NarrowLobe) &&
       !features.Has(Feature::LobeBlinn));
   plan.Features.Set(Feature::InterpolatedDots,
-    allowed && vertexNormal && lobeFromDots && features.Has(Feature::Directional) &&
-      !features.Has(Feature::NormalFallback) && plan.DirectionalLights.size() <= maximumLights);
+    allowed && state.ShadesWithPointNormals() && lobeFromDots &&
+      features.Has(Feature::Directional) && !features.Has(Feature::NormalFallback) &&
+      plan.DirectionalLights.size() <= maximumLights);
 }
 
 //------------------------------------------------------------------------------

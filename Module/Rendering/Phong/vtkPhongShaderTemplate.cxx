@@ -298,10 +298,9 @@ void vtkPhongShaderTemplate::Substitute(
   DeclareInvariantPosition(shaders);
   const bool perVertex = plan.Has(Feature::SumsPerVertex);
   const std::string sums = this->Resolve(vtkPhongLightingLib, "Sums", plan);
-  const std::string lights = this->Resolve(vtkPhongLightingLib, "Lights", plan);
   const bool fragmentLights = !perVertex || plan.Has(Feature::DiffusePerFragment);
-  this->SubstituteFragment(
-    shaders[vtkShader::Fragment], sums, fragmentLights ? lights : std::string(), plan);
+  this->SubstituteFragment(shaders[vtkShader::Fragment], sums,
+    fragmentLights ? this->Resolve(vtkPhongLightingLib, "Lights", plan) : std::string(), plan);
   if (perVertex)
   {
     // The vertices light with the light directions themselves: the interpolated dot products
