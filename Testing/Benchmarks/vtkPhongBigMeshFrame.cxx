@@ -16,6 +16,7 @@
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkOpenMeshNormals.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
@@ -259,15 +260,21 @@ int main(int argc, char* argv[])
   std::sort(frames.begin(), frames.end());
   const double steady = frames.empty() ? 0.0 : frames[frames.size() / 2];
   int culled = -1;
+  const char* normalsPath = "-"; // how vtkPhong got its normals
   if (auto* phong = vtkPhongPolyDataMapper::SafeDownCast(mapper))
   {
     culled = phong->GetUsedClosedSurfaceCulling() ? 1 : 0;
+    normalsPath = !phong->GetUsedGeneratedNormals()             ? "input"
+      : phong->GetNormalsGenerator()->GetComputedPointByPoint() ? "point-by-point"
+                                                                : "topology";
   }
   std::printf(
     "RESULT mesh=%s triangles=%lld normals=%s mapper=%s first_s=%.3f steady_ms=%.1f "
-    "data_mb=%.0f peak_above_data_mb=%.0f culled=%d settle_frames=%d frames_ms=%s renderer=%s\n",
+    "data_mb=%.0f peak_above_data_mb=%.0f culled=%d normals_path=%s settle_frames=%d frames_ms=%s "
+    "renderer=%s\n",
     options.Mesh.c_str(), static_cast<long long>(mesh->GetNumberOfPolys()),
     options.Normals ? "yes" : "no", options.Phong ? "phong" : "stock", first, 1e3 * steady, dataMB,
-    StatusMB("VmHWM:") - dataMB, culled, settleFrames, each.c_str(), RendererName(window).c_str());
+    StatusMB("VmHWM:") - dataMB, culled, normalsPath, settleFrames, each.c_str(),
+    RendererName(window).c_str());
   return 0;
 }

@@ -47,8 +47,8 @@ def ratio(phong, stock, key):
 
 print("| mesh | triangles | input normals | first frame, stock / vtkPhong (ratio) | "
       "steady frame, stock / vtkPhong (ratio) | peak above data, stock / vtkPhong (ratio) | "
-      "culled | renderer |")
-print("|---|---|---|---|---|---|---|---|")
+      "culled | vtkPhong's normals | renderer |")
+print("|---|---|---|---|---|---|---|---|---|")
 failures = 0
 for mesh in args.meshes.split(","):
     for triangles in sizes:
@@ -57,15 +57,16 @@ for mesh in args.meshes.split(","):
             phong = measure(mesh, triangles, normals, "phong")
             if "error" in stock or "error" in phong:
                 failures += 1
-                print("| %s | %.0f | %s | %s | | | | |" % (
+                print("| %s | %.0f | %s | %s | | | | | |" % (
                     mesh, triangles, normals, stock.get("error") or phong.get("error")))
                 continue
-            print("| %s | %.1fM | %s | %s / %s s (%s) | %s / %s ms (%s) | %s / %s MB (%s) | %s | %s |"
+            print("| %s | %.1fM | %s | %s / %s s (%s) | %s / %s ms (%s) | %s / %s MB (%s) | %s | %s | %s |"
                   % (mesh, int(phong["triangles"]) / 1e6, normals,
                      stock["first_s"], phong["first_s"], ratio(phong, stock, "first_s"),
                      stock["steady_ms"], phong["steady_ms"], ratio(phong, stock, "steady_ms"),
                      stock["peak_above_data_mb"], phong["peak_above_data_mb"],
                      ratio(phong, stock, "peak_above_data_mb"),
-                     "yes" if phong["culled"] == "1" else "no", phong["renderer"]))
+                     "yes" if phong["culled"] == "1" else "no",
+                     phong.get("normals_path", "-").replace("-", " "), phong["renderer"]))
             sys.stdout.flush()
 sys.exit(1 if failures else 0)

@@ -45,6 +45,7 @@
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -116,6 +117,27 @@ inline vtkSmartPointer<vtkPolyData> Moved(vtkPolyData* mesh, double x, double y,
   move->SetTransform(transform);
   move->Update();
   return move->GetOutput();
+}
+
+// A polygonal mesh of double-precision points from lists of points and faces (any sizes).
+inline vtkSmartPointer<vtkPolyData> MakeMesh(const std::vector<std::array<double, 3>>& points,
+  const std::vector<std::vector<vtkIdType>>& faces)
+{
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  for (const auto& p : points)
+  {
+    pts->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const auto& face : faces)
+  {
+    polys->InsertNextCell(static_cast<vtkIdType>(face.size()), face.data());
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(pts);
+  mesh->SetPolys(polys);
+  return mesh;
 }
 
 // A square in the z = 0 plane, facing +z, subdivided so per-vertex lighting can resolve it.
@@ -406,7 +428,7 @@ inline int CountDifferentPixels(vtkImageData* a, vtkImageData* b, int threshold)
   return count;
 }
 
-// Whether two arrays hold exactly the same values.
+// Whether two arrays hold exactly the same values (NaN where the other has NaN).
 inline bool ArraysEqual(vtkDataArray* a, vtkDataArray* b)
 {
   if (!a || !b || a->GetNumberOfTuples() != b->GetNumberOfTuples() ||
@@ -416,7 +438,8 @@ inline bool ArraysEqual(vtkDataArray* a, vtkDataArray* b)
   }
   for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
   {
-    if (a->GetVariantValue(i) != b->GetVariantValue(i))
+    const vtkVariant x = a->GetVariantValue(i), y = b->GetVariantValue(i);
+    if (x != y && !(std::isnan(x.ToDouble()) && std::isnan(y.ToDouble())))
     {
       return false;
     }

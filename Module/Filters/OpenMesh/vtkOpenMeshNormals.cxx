@@ -6,6 +6,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenMeshNormalsExecution.h"
 #include "vtkOpenMeshNormalsJoin.h"
+#include "vtkOpenMeshNormalsPointByPoint.h"
 #include "vtkOpenMeshNormalsTopology.h"
 #include "vtkPhongCellValidator.h"
 #include "vtkPhongClampedSetter.h"
@@ -19,6 +20,18 @@ struct vtkOpenMeshNormals::Internals
 {
   vtkOpenMeshNormalsTopology Topology;
   vtkOpenMeshNormalsWorkspace Workspace;
+  // The cells of the last execution computed point by point: the same cells again (only the
+  // points moved) are an animation, which the kept topology serves faster.
+  vtkCellArray* PointByPointPolys = nullptr;
+  vtkMTimeType PointByPointPolysTime = 0;
+  vtkIdType PointByPointPoints = -1;
+
+  bool SameCellsAsPointByPoint(vtkPolyData* input) const
+  {
+    return this->PointByPointPolys == input->GetPolys() &&
+      this->PointByPointPolysTime == input->GetPolys()->GetMTime() &&
+      this->PointByPointPoints == input->GetNumberOfPoints();
+  }
 };
 
 //------------------------------------------------------------------------------
@@ -67,7 +80,7 @@ int vtkOpenMeshNormals::RequestData(
   this->NumberOfFacesWithRepeatedPoints = 0;
   this->NumberOfDegenerateFaces = this->NumberOfReorientedFaces = this->NumberOfSplitPoints = 0;
   this->NumberOfJoinedPoints = 0;
-  this->TopologyReused = false;
+  this->TopologyReused = this->ComputedPointByPoint = false;
   const vtkSmartPointer<vtkPolyData> input =
     this->CheckCellPointIds(vtkPolyData::GetData(inputVector[0]));
   if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0)
@@ -115,6 +128,25 @@ bool vtkOpenMeshNormals::ComputeJoinedNormals(
 //------------------------------------------------------------------------------
 bool vtkOpenMeshNormals::ComputeNormals(vtkPolyData* input, vtkPolyData* output)
 {
+  if (this->MayComputePointByPoint(input))
+  {
+    const vtkOpenMeshNormalsPointByPoint::Settings settings{ this->Weighting, this->FeatureAngle,
+      this->Splitting != 0, this->OriginalIdsName() };
+    switch (vtkOpenMeshNormalsPointByPoint::Compute(settings, input, output, this))
+    {
+      case vtkOpenMeshNormalsPointByPoint::Result::Computed:
+        this->ComputedPointByPoint = true;
+        this->Internal.reset(new Internals); // a topology of other cells: its memory back
+        this->Internal->PointByPointPolys = input->GetPolys();
+        this->Internal->PointByPointPolysTime = input->GetPolys()->GetMTime();
+        this->Internal->PointByPointPoints = input->GetNumberOfPoints();
+        return true;
+      case vtkOpenMeshNormalsPointByPoint::Result::Aborted:
+        return false;
+      case vtkOpenMeshNormalsPointByPoint::Result::NeedsTopology:
+        break;
+    }
+  }
   if (!this->UpdateTopology(input))
   {
     return false;
@@ -179,6 +211,17 @@ vtkSmartPointer<vtkPolyData> vtkOpenMeshNormals::CheckCellPointIds(vtkPolyData* 
 }
 
 //------------------------------------------------------------------------------
+bool vtkOpenMeshNormals::MayComputePointByPoint(vtkPolyData* input) const
+{
+  return this->PointByPoint && this->ComputePointNormals && !this->ComputeCellNormals &&
+    !this->AutoOrientNormals && !this->FlipNormals && !this->IncrementalConstruction &&
+    !this->AlwaysHalfedgeMesh && !this->Internal->SameCellsAsPointByPoint(input) &&
+    !this->Internal->Topology.Matches(input, this->Consistency || this->AutoOrientNormals,
+      this->NonManifoldTraversal != 0, false, false) &&
+    vtkOpenMeshNormalsPointByPoint::Takes(input);
+}
+
+//------------------------------------------------------------------------------
 // Reuses the topology when only the points changed, else builds it; false if
 // building failed (aborted, or a mesh too large).
 bool vtkOpenMeshNormals::UpdateTopology(vtkPolyData* input)
@@ -228,6 +271,7 @@ void vtkOpenMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IncrementalConstruction: " << (this->IncrementalConstruction ? "On" : "Off")
      << "\n";
   os << indent << "AlwaysHalfedgeMesh: " << (this->AlwaysHalfedgeMesh ? "On" : "Off") << "\n";
+  os << indent << "PointByPoint: " << (this->PointByPoint ? "On" : "Off") << "\n";
   os << indent << "JoinCoincidentPoints: " << (this->JoinCoincidentPoints ? "On" : "Off") << "\n";
   os << indent << "JoinTolerance: " << this->JoinTolerance << "\n";
   os << indent << "OriginalPointIdsArrayName: "
@@ -241,4 +285,5 @@ void vtkOpenMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSplitPoints: " << this->NumberOfSplitPoints << "\n";
   os << indent << "NumberOfJoinedPoints: " << this->NumberOfJoinedPoints << "\n";
   os << indent << "TopologyReused: " << (this->TopologyReused ? "yes" : "no") << "\n";
+  os << indent << "ComputedPointByPoint: " << (this->ComputedPointByPoint ? "yes" : "no") << "\n";
 }

@@ -40,9 +40,11 @@
  * Output normals are always finite and unit length. Where no normal is defined (a point no
  * valid face touches, a degenerate face) the normal is (0, 0, 1).
  *
- * When only the points move (the input's polygons and strips are the same arrays, unmodified,
- * with the same number of points: an animation, a deformation), the topology (orientation,
- * halfedge mesh, vertex fans) is reused and only the geometry is recomputed.
+ * A smooth, consistently oriented triangle mesh (the common input of a renderer) is computed
+ * point by point, in bounded memory, without the topology (PointByPoint). When only the
+ * points move (the input's polygons and strips are the same arrays, unmodified, with the
+ * same number of points: an animation, a deformation), the topology (orientation, halfedge
+ * mesh, vertex fans) is built once and reused, and only the geometry is recomputed.
  *
  * @sa vtkPolyDataNormals vtkPhongPolyDataMapper
  */
@@ -198,6 +200,26 @@ public:
 
   ///@{
   /**
+   * Compute, where the mesh allows, one point at a time in bounded memory, without building
+   * the topology: a triangle mesh (no strips) whose every point has one fan of faces,
+   * consistently oriented, and, with Splitting, no sharp edge and no cone's apex in it. The
+   * output is the same, bit for bit; the memory is the normals (and original point ids),
+   * 4 bytes a point and at most 64 MB of corners, instead of the topology's (about 170 bytes
+   * a triangle, kept between executions). The first point that needs the topology (a face to
+   * turn, a non-manifold edge or vertex, a repeated vertex index, a point to split) sends the
+   * mesh to it. Not taken with ComputeCellNormals, AutoOrientNormals, FlipNormals,
+   * IncrementalConstruction or AlwaysHalfedgeMesh. A positions-only update after a point by
+   * point execution (the same cell arrays, unmodified, and as many points: an animation)
+   * builds the topology and keeps it, so that the updates after it reuse it, several times
+   * faster. Off: the topology is always built and kept. Default on.
+   */
+  vtkSetMacro(PointByPoint, vtkTypeBool);
+  vtkGetMacro(PointByPoint, vtkTypeBool);
+  vtkBooleanMacro(PointByPoint, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Whether the copies of one point are one vertex for the point normals. Pieces of one
    * surface (ParaView's ranks, a source's pieces, appended blocks) each hold their own copy of
    * the points on their cuts; joined, they get the normals of the whole surface, without a
@@ -240,7 +262,8 @@ public:
    * faces left with fewer than three distinct vertices, faces whose orientation Consistency or
    * AutoOrientNormals reversed, points added by Splitting (or by JoinCoincidentPoints), points
    * joined to another as its copy, and whether the topology of the previous
-   * execution was reused (only the points had changed).
+   * execution was reused (only the points had changed), and whether the normals were computed
+   * point by point, without the topology (PointByPoint).
    */
   vtkGetMacro(NumberOfInvalidCells, vtkIdType);
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
@@ -250,6 +273,7 @@ public:
   vtkGetMacro(NumberOfSplitPoints, vtkIdType);
   vtkGetMacro(NumberOfJoinedPoints, vtkIdType);
   vtkGetMacro(TopologyReused, bool);
+  vtkGetMacro(ComputedPointByPoint, bool);
   ///@}
 
 protected:
@@ -269,6 +293,7 @@ protected:
   vtkTypeBool NonManifoldTraversal = 1;
   vtkTypeBool IncrementalConstruction = 0;
   vtkTypeBool AlwaysHalfedgeMesh = 0;
+  vtkTypeBool PointByPoint = 1;
   vtkTypeBool JoinCoincidentPoints = 0;
   double JoinTolerance = 1e-6;
   char* OriginalPointIdsArrayName = nullptr;
@@ -281,6 +306,7 @@ protected:
   vtkIdType NumberOfSplitPoints = 0;
   vtkIdType NumberOfJoinedPoints = 0;
   bool TopologyReused = false;
+  bool ComputedPointByPoint = false;
 
 private:
   vtkOpenMeshNormals(const vtkOpenMeshNormals&) = delete;
@@ -296,6 +322,9 @@ private:
   // The same with the copies of each point joined (JoinCoincidentPoints).
   bool ComputeJoinedNormals(
     vtkPolyData* input, const std::vector<vtkIdType>& representative, vtkPolyData* output);
+  // Whether the settings and the input allow vtkOpenMeshNormalsPointByPoint, and this is not
+  // a positions-only update (which reuses a kept topology, or builds one for the next).
+  bool MayComputePointByPoint(vtkPolyData* input) const;
   // Reuses the topology (vtkOpenMeshNormalsTopology) or builds it.
   bool UpdateTopology(vtkPolyData* input);
 

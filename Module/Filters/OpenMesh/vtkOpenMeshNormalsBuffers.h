@@ -2,12 +2,15 @@
  * @file   vtkOpenMeshNormalsBuffers.h
  * @brief  the index, array and vector types shared by vtkOpenMeshNormals' files (private)
  *
- * vtkOpenMeshNormalsTopology and vtkOpenMeshNormalsExecution keep their
- * working arrays in these types. Neither wrapped nor installed.
+ * vtkOpenMeshNormalsTopology, vtkOpenMeshNormalsExecution and
+ * vtkOpenMeshNormalsPointByPoint keep their working arrays in these types and
+ * read cell arrays through VisitCells. Neither wrapped nor installed.
  */
 
 #ifndef vtkOpenMeshNormalsBuffers_h
 #define vtkOpenMeshNormalsBuffers_h
+
+#include "vtkCellArray.h"
 
 #include <array>
 #include <cmath>
@@ -75,6 +78,23 @@ inline double Dot(const Vector& a, const Vector& b)
 inline bool IsFinite(const double* p)
 {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+// Visits the offsets and connectivity of a vtkCellArray, whatever its
+// storage (32- or 64-bit).
+template <typename Visit>
+void VisitCells(vtkCellArray* cells, Visit&& visit)
+{
+  if (cells->IsStorage64Bit())
+  {
+    visit(
+      cells->GetOffsetsArray64()->GetPointer(0), cells->GetConnectivityArray64()->GetPointer(0));
+  }
+  else
+  {
+    visit(
+      cells->GetOffsetsArray32()->GetPointer(0), cells->GetConnectivityArray32()->GetPointer(0));
+  }
 }
 }
 

@@ -7,6 +7,7 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenMeshNormals.h"
+#include "vtkOpenMeshNormalsFanRules.h"
 #include "vtkOpenMeshNormalsTopology.h"
 #include "vtkOpenMeshNormalsWeightings.h"
 #include "vtkPointData.h"
@@ -22,24 +23,6 @@ using namespace vtkOpenMeshNormalsDetail;
 
 namespace
 {
-// Writes a unit normal, or +z where no normal is defined.
-void StoreNormal(const Vector& sum, float* out)
-{
-  const double length = std::sqrt(Dot(sum, sum));
-  if (length > 0.0 && std::isfinite(length))
-  {
-    out[0] = static_cast<float>(sum[0] / length);
-    out[1] = static_cast<float>(sum[1] / length);
-    out[2] = static_cast<float>(sum[2] / length);
-  }
-  else
-  {
-    out[0] = 0.f;
-    out[1] = 0.f;
-    out[2] = 1.f;
-  }
-}
-
 vtkSmartPointer<vtkFloatArray> NewNormals(vtkIdType count)
 {
   auto normals = vtkSmartPointer<vtkFloatArray>::New();
@@ -358,8 +341,8 @@ void vtkOpenMeshNormalsExecution::CutFan(Index v, const Contribution& contributi
     if (!cut)
     {
       const Index f = topology.FanFaces[here], g = topology.FanFaces[next];
-      cut = workspace.FaceValid[f] && workspace.FaceValid[g] &&
-        Dot(workspace.UnitNormal[f], workspace.UnitNormal[g]) <= this->CosFeatureAngle;
+      cut = IsSharpEdge(workspace.FaceValid[f] != 0, workspace.UnitNormal[f],
+        workspace.FaceValid[g] != 0, workspace.UnitNormal[g], this->CosFeatureAngle);
     }
     workspace.Cuts[here] = cut;
     count += cut;
@@ -379,39 +362,18 @@ void vtkOpenMeshNormalsExecution::CutFan(Index v, const Contribution& contributi
 }
 
 //------------------------------------------------------------------------------
-// A fan that the feature angle leaves whole but whose faces' mean direction is farther than
-// the feature angle from one of them: a singular vertex (a cone's apex), whose averaged
-// normal would represent none of its faces.
 bool vtkOpenMeshNormalsExecution::IsSingularFan(Index first, Index last) const
 {
   const vtkOpenMeshNormalsWorkspace& workspace = this->Workspace;
-  Vector mean = { 0.0, 0.0, 0.0 };
-  for (Index here = first; here < last; ++here)
-  {
-    const Index f = this->Topology.FanFaces[here];
-    if (workspace.FaceValid[f])
+  const Buffer<Index>& fanFaces = this->Topology.FanFaces;
+  return vtkOpenMeshNormalsDetail::IsSingularFan(
+    last - first,
+    [&](Index i)
     {
-      for (int c = 0; c < 3; ++c)
-      {
-        mean[c] += workspace.UnitNormal[f][c];
-      }
-    }
-  }
-  const double length = std::sqrt(Dot(mean, mean));
-  if (!(length > 0.0))
-  {
-    return false;
-  }
-  for (Index here = first; here < last; ++here)
-  {
-    const Index f = this->Topology.FanFaces[here];
-    if (workspace.FaceValid[f] &&
-      Dot(mean, workspace.UnitNormal[f]) <= this->CosFeatureAngle * length)
-    {
-      return true;
-    }
-  }
-  return false;
+      const Index f = fanFaces[first + i];
+      return std::make_pair(workspace.FaceValid[f] != 0, &workspace.UnitNormal[f]);
+    },
+    this->CosFeatureAngle);
 }
 
 //------------------------------------------------------------------------------

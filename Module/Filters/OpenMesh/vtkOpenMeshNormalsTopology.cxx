@@ -13,23 +13,6 @@ using namespace vtkOpenMeshNormalsDetail;
 
 namespace
 {
-// Visits the offsets and connectivity of a vtkCellArray, whatever its
-// storage (32- or 64-bit).
-template <typename Visit>
-void VisitCells(vtkCellArray* cells, Visit&& visit)
-{
-  if (cells->IsStorage64Bit())
-  {
-    visit(
-      cells->GetOffsetsArray64()->GetPointer(0), cells->GetConnectivityArray64()->GetPointer(0));
-  }
-  else
-  {
-    visit(
-      cells->GetOffsetsArray32()->GetPointer(0), cells->GetConnectivityArray32()->GetPointer(0));
-  }
-}
-
 //------------------------------------------------------------------------------
 // The search for each corner's twin among the corners at its point.
 class TwinFinder

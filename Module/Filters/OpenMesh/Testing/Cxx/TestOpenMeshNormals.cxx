@@ -56,26 +56,6 @@ double AngleDegrees(const Vec& a, const Vec& b)
   return vtkMath::DegreesFromRadians(std::acos(std::min(1.0, std::max(-1.0, c))));
 }
 
-vtkSmartPointer<vtkPolyData> MakeMesh(
-  const std::vector<Vec>& points, const std::vector<std::vector<vtkIdType>>& faces)
-{
-  vtkNew<vtkPoints> pts;
-  pts->SetDataTypeToDouble();
-  for (const Vec& p : points)
-  {
-    pts->InsertNextPoint(p.data());
-  }
-  vtkNew<vtkCellArray> polys;
-  for (const auto& face : faces)
-  {
-    polys->InsertNextCell(static_cast<vtkIdType>(face.size()), face.data());
-  }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(pts);
-  mesh->SetPolys(polys);
-  return mesh;
-}
-
 Vec PointNormal(vtkPolyData* output, vtkIdType id)
 {
   Vec n;
@@ -160,7 +140,7 @@ int TestOpenMeshNormals(int argc, char* argv[])
       { -0.7, 0.6, 0.25 }, { -0.9, -0.4, -0.2 }, { 0.2, -1.1, 0.3 }, { 1.4, 1.2, 0.6 } };
     const std::vector<std::vector<vtkIdType>> faces = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 },
       { 0, 4, 5 }, { 0, 5, 1 }, { 1, 6, 2 } };
-    auto mesh = MakeMesh(points, faces);
+    auto mesh = vtkPhongTest::MakeMesh(points, faces);
     for (int weighting = vtkOpenMeshNormals::Uniform; weighting <= vtkOpenMeshNormals::Max;
          ++weighting)
     {
@@ -399,7 +379,7 @@ int TestOpenMeshNormals(int argc, char* argv[])
       { 9, 12, 13 },            // zero area (12 and 13 coincide)
       { 2, 2, 4 },              // degenerate: two distinct points only
     };
-    auto mesh = MakeMesh(points, faces);
+    auto mesh = vtkPhongTest::MakeMesh(points, faces);
     vtkNew<vtkCellArray> verts;
     vtkIdType vertex = 10;
     verts->InsertNextCell(1, &vertex);
@@ -478,7 +458,7 @@ int TestOpenMeshNormals(int argc, char* argv[])
           cone == 0 ? std::vector<vtkIdType>{ 0, b, a } : std::vector<vtkIdType>{ 0, a, b });
       }
     }
-    auto mesh = MakeMesh(points, faces);
+    auto mesh = vtkPhongTest::MakeMesh(points, faces);
     vtkNew<vtkOpenMeshNormals> direct, incremental;
     vtkPhongTest::ErrorCollector quiet;
     quiet.Observe(direct);
@@ -494,8 +474,9 @@ int TestOpenMeshNormals(int argc, char* argv[])
       "two cones: direct and add_face constructions agree");
   }
 
-  { // Positions-only updates reuse the topology and equal a recomputation;
-    // progress is reported and abort is honoured.
+  { // A smooth mesh is computed point by point; when its points move (an animation) the
+    // topology is built, then reused; every update equals a recomputation; progress is
+    // reported and abort is honoured.
     auto mesh = vtkPhongTest::MakeSphere(48);
     mesh->GetPointData()->SetNormals(nullptr);
     vtkNew<vtkOpenMeshNormals> normals;
@@ -507,32 +488,49 @@ int TestOpenMeshNormals(int argc, char* argv[])
       [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
     normals->AddObserver(vtkCommand::ProgressEvent, onProgress);
     normals->Update();
-    checks.Expect(progressEvents >= 5, "progress is reported");
-    vtkPoints* points = mesh->GetPoints();
-    for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+    checks.Expect(normals->GetComputedPointByPoint(), "a smooth sphere is computed point by point");
+    checks.Expect(progressEvents >= 3, "progress is reported point by point");
+    const char* const updates[] = { "the first positions-only update builds the topology",
+      "the next one reuses it" };
+    for (int update = 0; update < 2; ++update)
     {
-      double x[3];
-      points->GetPoint(p, x);
-      points->SetPoint(p, x[0] * (1.0 + 0.3 * x[2]), x[1], x[2] * 0.7);
+      vtkPoints* points = mesh->GetPoints();
+      for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+      {
+        double x[3];
+        points->GetPoint(p, x);
+        points->SetPoint(p, x[0] * (1.0 + 0.3 * x[2]), x[1], x[2] * 0.7);
+      }
+      points->Modified();
+      progressEvents = 0;
+      normals->Update();
+      checks.Expect(
+        !normals->GetComputedPointByPoint() && normals->GetTopologyReused() == (update == 1),
+        updates[update]);
+      checks.Expect(update == 1 || progressEvents >= 5, "progress is reported by the topology");
+      vtkNew<vtkOpenMeshNormals> fresh;
+      fresh->SetInputData(mesh);
+      fresh->Update();
+      checks.Expect(fresh->GetComputedPointByPoint(), "the recomputation is point by point");
+      checks.Expect(vtkPhongTest::ArraysEqual(normals->GetOutput()->GetPointData()->GetNormals(),
+                      fresh->GetOutput()->GetPointData()->GetNormals()),
+        std::string(updates[update]) + ": equals a recomputation");
     }
-    points->Modified();
-    normals->Update();
-    checks.Expect(normals->GetTopologyReused(), "moving points reuses the topology");
-    vtkNew<vtkOpenMeshNormals> fresh;
-    fresh->SetInputData(mesh);
-    fresh->Update();
-    checks.Expect(vtkPhongTest::ArraysEqual(normals->GetOutput()->GetPointData()->GetNormals(),
-                    fresh->GetOutput()->GetPointData()->GetNormals()),
-      "the positions-only update equals a recomputation");
 
-    vtkNew<vtkOpenMeshNormals> aborted;
-    aborted->SetInputData(mesh);
-    vtkNew<vtkCallbackCommand> abort;
-    abort->SetCallback([](vtkObject* caller, unsigned long, void*, void*)
-      { static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1); });
-    aborted->AddObserver(vtkCommand::ProgressEvent, abort);
-    aborted->Update();
-    checks.Expect(aborted->GetOutput()->GetNumberOfPoints() == 0, "abort gives an empty output");
+    for (const bool pointByPoint : { true, false })
+    {
+      vtkNew<vtkOpenMeshNormals> aborted;
+      aborted->SetInputData(mesh);
+      aborted->SetPointByPoint(pointByPoint);
+      vtkNew<vtkCallbackCommand> abort;
+      abort->SetCallback([](vtkObject* caller, unsigned long, void*, void*)
+        { static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1); });
+      aborted->AddObserver(vtkCommand::ProgressEvent, abort);
+      aborted->Update();
+      checks.Expect(aborted->GetOutput()->GetNumberOfPoints() == 0,
+        std::string("abort gives an empty output") +
+          (pointByPoint ? " (point by point)" : " (topology)"));
+    }
   }
 
   { // Degenerate polygons come out as they came in, also from cell arrays of 32-bit ids
