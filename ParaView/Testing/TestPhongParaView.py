@@ -22,7 +22,9 @@ directional, a point and a spot light. Checks, each failing with "ERROR:":
 6. nested contours drawn with the depth pre-pass on: used, and the same picture as without;
 7. "Error Budget" is accepted on every rank, and at 3 levels every pixel stays within 3
    levels (and 8-bit rounding) of the exact picture (this scene's point and spot lights keep
-   it per fragment: only light culling may spend the budget).
+   it per fragment: only light culling may spend the budget);
+8. "Specular Anti-Aliasing" changes a highlight narrower than a pixel, and off gives the
+   exact picture back.
 """
 
 import argparse
@@ -126,6 +128,27 @@ def check_error_budget(display, view, ranks, exact_picture, out):
     display.ErrorBudget = 0.0
 
 
+def check_specular_anti_aliasing(display, view, ranks, out):
+    """8: Specular Anti-Aliasing averages a highlight narrower than a pixel (shininess 2e4)
+    over its pixel: the picture changes, and only near the highlight (a few levels at most
+    elsewhere); off again, the exact picture comes back."""
+    display.Shininess = 2.0e4
+    pictures = {}
+    for name, on in (("exact", 0), ("filtered", 1), ("again", 0)):
+        display.SpecularAntiAliasing = on
+        Render(view)
+        path = os.path.join(out, "PhongParaView-%dranks-specular-aa-%s.png" % (ranks, name))
+        SaveScreenshot(path, view, ImageResolution=list(SIZE))
+        pictures[name] = read_png(path)[3]
+    display.Shininess = 200.0
+    changed = sum(1 for a, b in zip(pictures["exact"], pictures["filtered"]) if a != b)
+    print("specular anti-aliasing: %d pixels changed" % changed)
+    if changed == 0 or changed > len(pictures["exact"]) // 4:
+        fail("Specular Anti-Aliasing changed %d pixels of %d" % (changed, len(pictures["exact"])))
+    if pictures["again"] != pictures["exact"]:
+        fail("Specular Anti-Aliasing off did not give the exact picture back")
+
+
 def check_depth_pre_pass(view, ranks, out, hide, server):
     """6: nested contours (closed shells of ParaView's Wavelet) drawn with the depth pre-pass
     on: it is used, and the picture is the one drawn without it (from the fourth frame on,
@@ -222,6 +245,7 @@ def main():
             fail("%d pixels differ from the serial baseline %s" % (differing, args.baseline))
     check_back_face_culling(display, view, ranks, picture, args.out, args.server)
     check_error_budget(display, view, ranks, picture, args.out)
+    check_specular_anti_aliasing(display, view, ranks, args.out)
 
     # 3: each rank's piece in its own colour (red rank 0, blue rank 1, ...).
     # ColorBy makes the lookup table (ParaView 6 no longer does on ColorArrayName alone).

@@ -20,6 +20,7 @@
 //    Surface and Surface).
 // 4. --only kinds: every light kind at 1, 8 and 32 lights on the sphere and the meshes given.
 // 5. Frame time against the error budget: stock, exact, budgets 0.5, 1 and 3 levels.
+// 6. --only aa: specular anti-aliasing's cost, off against on (n = 1e3, 1 and 8 lights).
 //
 // On llvmpipe fragment work runs on the CPU, so shader cost shows in these
 // times. --quick shrinks everything so ctest can check the program runs.
@@ -1152,6 +1153,57 @@ void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
   PlannerCost(meshes, quick);
 }
 
+// Specular anti-aliasing's cost: vtkPhong with and without it on the sphere and the meshes
+// given (narrow Blinn lobe, n = 1e3), 1 and 8 directional lights, one window, interleaved.
+void AntiAliasingSection(const std::vector<std::string>& meshFiles, bool quick)
+{
+  const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
+  std::printf("\n== Specular anti-aliasing (%dx%d; ms) ==\n", width, height);
+  std::printf("%-22s %-15s %8s %8s %8s\n", "mesh", "lights", "off", "on", "on/off");
+  std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> meshes;
+  meshes.emplace_back("sphere 256", Sphere(quick ? 32 : 256));
+  for (const auto& file : meshFiles)
+  {
+    meshes.push_back(MeshWithNormals(file));
+  }
+  for (const auto& mesh : meshes)
+  {
+    View view(width, height);
+    vtkNew<vtkPhongProperty> blinn;
+    blinn->SetColor(0.8, 0.6, 0.4);
+    blinn->SetSpecularColor(1.0, 1.0, 1.0);
+    blinn->SetDiffuse(0.8);
+    blinn->SetSpecular(0.5);
+    blinn->SetShininess(1.0e3);
+    blinn->SetLightingModelToBlinnPhong();
+    blinn->SetInterpolationToPhong();
+    Contest contest{ view.Window, view.Renderer, quick ? 2 : 7, quick ? 1 : 3, {} };
+    for (const bool filtered : { false, true })
+    {
+      vtkNew<vtkPhongPolyDataMapper> mapper;
+      mapper->SetInputData(mesh.second);
+      mapper->SetSpecularAntiAliasing(filtered);
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->SetProperty(blinn);
+      view.Renderer->AddActor(actor);
+      contest.Actors.push_back(actor);
+    }
+    view.Frame(mesh.second);
+    for (const std::string set : { "1 directional", "8 directional" })
+    {
+      SetLights(view.Renderer, set);
+      const auto t = contest.Run();
+      std::printf("%-22s %-15s %8.2f %8.2f",
+        set == std::string("1 directional") ? mesh.first.c_str() : "", set.c_str(), 1e3 * t[0],
+        1e3 * t[1]);
+      PrintRatio(t[1], t[0]);
+      std::printf("\n");
+      std::fflush(stdout);
+    }
+  }
+}
+
 int main(int argc, char* argv[])
 {
   std::vector<std::string> meshFiles;
@@ -1170,7 +1222,7 @@ int main(int argc, char* argv[])
     else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
     {
       std::printf("usage: %s [MESH.off ...] [--quick] [--only shaders|lights|interpolation|"
-                  "meshes|culling|shells|kinds|budget]\n",
+                  "meshes|culling|shells|kinds|budget|aa]\n",
         argv[0]);
       return 0;
     }
@@ -1212,6 +1264,10 @@ int main(int argc, char* argv[])
   if (wanted("budget"))
   {
     BudgetSection(meshFiles, quick);
+  }
+  if (wanted("aa"))
+  {
+    AntiAliasingSection(meshFiles, quick);
   }
   return 0;
 }

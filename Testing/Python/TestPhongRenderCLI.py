@@ -253,8 +253,24 @@ result = run(path("sphere.off"), "-o", output, "--size", "120x90", "--quiet", "-
              "normalized-phong", "--interpolation", "per-vertex-gouraud", "--shininess",
              "5000", "--color", "0.5,0.5,0.5", "--normals-weighting", "angle",
              "--feature-angle", "45", "--azimuth", "-40", "--elevation", "10", "--zoom", "1.2",
-             "--error-budget", "2")
+             "--error-budget", "2", "--specular-aa")
 checks.expect(result.returncode == 0, "every flag at once (%s)" % result.stderr.strip())
+
+# A highlight narrower than a pixel: --specular-aa (and the scene file's "specular_aa")
+# average it over its pixel, so the picture changes; without either it stays the exact one.
+highlights = {}
+scene_aa = path("specular-aa.json")
+with open(scene_aa, "w") as stream:
+    json.dump({"specular_aa": True}, stream)
+for name, extra in (("exact", ()), ("flag", ("--specular-aa",)), ("scene", ("--scene", scene_aa))):
+    output = path("highlight-%s.png" % name)
+    result = run(path("sphere.off"), "-o", output, "--size", "120x90", "--quiet",
+                 "--shininess", "20000", "--specular", "1", *extra)
+    highlights[name] = pixels(read(output)) if result.returncode == 0 else None
+checks.expect(highlights["exact"] is not None and highlights["flag"] is not None
+              and highlights["flag"] != highlights["exact"]
+              and highlights["scene"] == highlights["flag"],
+              "--specular-aa and the scene file's specular_aa average a narrow highlight")
 
 # --- progress, help ------------------------------------------------------------
 
@@ -279,7 +295,7 @@ for option in ("--output", "--scene", "--size", "--background", "--transparent",
                "--interpolation", "--color", "--ambient", "--diffuse", "--specular",
                "--shininess", "--emission", "--light", "--azimuth", "--elevation", "--zoom",
                "--debug-view", "--debug-light", "--normals-weighting", "--feature-angle",
-               "--error-budget", "--quiet", "scene file", "exit status", ".obj", ".exr", "headlight"):
+               "--error-budget", "--specular-aa", "--quiet", "scene file", "exit status", ".obj", ".exr", "headlight"):
     checks.expect(option in result.stdout, "--help documents " + option)
 
 # --- errors: one line, a non-zero status, no crash ------------------------------

@@ -146,6 +146,7 @@ bool vtkPhongLightingMapper<Base>::GetNeedToRebuildShaders(
     this->Internal->Triangles.Update(this->LitBlocks(), this->VBOBuildTime.GetMTime());
     state.Triangles = &this->Internal->Triangles;
   }
+  core->Options.SpecularAntiAliasing = settings->GetSpecularAntiAliasing();
   core->Options.LightingWithoutLights = settings->GetLightingWithoutLights();
   core->Options.DepthOnly = this->Internal->DrawingDepthOnly;
   core->MaximumNumberOfPrograms = settings->GetMaximumNumberOfShaderPrograms();

@@ -90,6 +90,7 @@ void vtkPhongLightingSettings::DeepCopy(vtkPhongLightingSettings* other)
   this->SetInterpolatedDotProducts(other->InterpolatedDotProducts);
   this->SetLightCullingBound(other->LightCullingBound);
   this->SetErrorBudget(other->ErrorBudget);
+  this->SetSpecularAntiAliasing(other->SpecularAntiAliasing);
   this->SetLightingWithoutLights(other->LightingWithoutLights);
   this->SetDepthPrePass(other->DepthPrePass);
   this->SetDepthPrePassOcclusionCulling(other->DepthPrePassOcclusionCulling);
@@ -108,6 +109,7 @@ void vtkPhongLightingSettings::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
   os << indent << "ErrorBudget: " << this->ErrorBudget << "\n";
+  os << indent << "SpecularAntiAliasing: " << (this->SpecularAntiAliasing ? "On" : "Off") << "\n";
   os << indent << "LightingWithoutLights: " << (this->LightingWithoutLights ? "On" : "Off")
      << "\n";
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";

@@ -165,6 +165,25 @@ public:
 
   ///@{
   /**
+   * Specular anti-aliasing: each fragment's specular lobe widened by the shading normal's
+   * variation over its pixel, so that a highlight narrower than a pixel shows the pixel's
+   * average instead of one sample of it (no sparkle, no flicker as the surface turns). The
+   * lobe cos^n is about a Gaussian of variance 1/n in angle; the normal's spread over the
+   * pixel's box adds (|dN/dx|^2 + |dN/dy|^2) / 24 (four times that for the Phong lobe, whose
+   * reflection vector turns twice as fast), capped at 0.09 where derivatives spike at
+   * silhouettes, and the lobe keeps its energy ((n' + 1) / (n + 1)); docs/lighting-model.md,
+   * "Specular anti-aliasing". It changes the model (a pixel's average, not its centre), so
+   * it is off by default. Per fragment only (per-vertex sums are already averaged over
+   * their triangles); under an error budget the sums stay per fragment, the budget being
+   * defined against the unfiltered model. Its shaders are variants of their own.
+   */
+  vtkSetMacro(SpecularAntiAliasing, bool);
+  vtkGetMacro(SpecularAntiAliasing, bool);
+  vtkBooleanMacro(SpecularAntiAliasing, bool);
+  ///@}
+
+  ///@{
+  /**
    * What a surface shows when the renderer has no switched-on light (automatic light
    * creation off, every light removed or switched off: PyVista's `lighting=None` and
    * `remove_all_lights()`, vedo's `lighting("off")` on a renderer). Off (the default), as
@@ -267,6 +286,7 @@ protected:
   bool InterpolatedDotProducts = true;
   double LightCullingBound = 0.5 / 255.0;
   double ErrorBudget = 0.0;
+  bool SpecularAntiAliasing = false;
   bool LightingWithoutLights = false;
   int DepthPrePass = DepthPrePassAutomatic;
   bool DepthPrePassOcclusionCulling = true;
@@ -438,6 +458,16 @@ private:
   {                                                                                                \
     return this->GetLightingSettings()->GetErrorBudget();                                          \
   }                                                                                                \
+  void SetSpecularAntiAliasing(bool on)                                                            \
+  {                                                                                                \
+    this->GetLightingSettings()->SetSpecularAntiAliasing(on);                                      \
+  }                                                                                                \
+  bool GetSpecularAntiAliasing()                                                                   \
+  {                                                                                                \
+    return this->GetLightingSettings()->GetSpecularAntiAliasing();                                 \
+  }                                                                                                \
+  void SpecularAntiAliasingOn() { this->SetSpecularAntiAliasing(true); }                           \
+  void SpecularAntiAliasingOff() { this->SetSpecularAntiAliasing(false); }                         \
   void SetLightingWithoutLights(bool on)                                                           \
   {                                                                                                \
     this->GetLightingSettings()->SetLightingWithoutLights(on);                                     \

@@ -60,6 +60,7 @@ enum class vtkPhongFeature : unsigned char
   SmoothTerminator,
   SoftSpotEdge,
   Specular,
+  SpecularAntiAliasing, ///< the specular lobe widened by the normal's variation over the pixel
   Spot,
   SpotAttenuation,
   SpotFalloff,

@@ -68,6 +68,8 @@ struct vtkPhongPlanOptions
   double LightCullingBound = 0.5 / 255.0;
   /// the error budget (linear colour; 0: the exact mode), vtkPhongErrorBudget
   double ErrorBudget = 0.0;
+  /// the specular lobe filtered over the pixel (SPECULAR_ANTI_ALIASING), per fragment only
+  bool SpecularAntiAliasing = false;
   /// the depth pre-pass: VTK's fragment shader with no lighting code at all, so that the
   /// pass costs what an unlit draw does (vtkPhongDepthPrePass.h)
   bool DepthOnly = false;

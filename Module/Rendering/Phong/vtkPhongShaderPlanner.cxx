@@ -177,6 +177,8 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   const auto budgetMode = BudgetChoosesMode(ren, actor, terms, state, options, plan);
   const bool perVertex =
     SetInterpolationFeatures(terms, state, geometryView, budgetMode, ren, plan);
+  plan.Features.Set(
+    Feature::SpecularAntiAliasing, terms.Specular && !perVertex && options.SpecularAntiAliasing);
   SetNormalFeatures(terms, state, perVertex, allFeatures, plan);
   if (this->InterpolatedDotLights == 0)
   {
@@ -394,7 +396,8 @@ void vtkPhongShaderPlanner::SetMaterialFeatures(const Terms& terms, bool allFeat
 // Under an error budget, where the surface's light sums go (vtkPhongErrorBudget): per vertex
 // only on a smooth surface (point normals that are VTK's, any interpolation but flat) under
 // directional lights only, without vtkShadowMapPass (per-vertex sums cannot read its
-// factors), in the final view, with what light culling left of the budget.
+// factors) or specular anti-aliasing (the budget is defined against the unfiltered model),
+// in the final view, with what light culling left of the budget.
 vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer* ren,
   vtkActor* actor, const Terms& terms, const PrimitiveState& state, const Options& options,
   Plan& plan)
@@ -405,7 +408,8 @@ vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer*
     plan.FrontMaterial->GetInterpolation() != VTK_FLAT;
   const bool shadowed = DrawnUnderShadowMaps(actor);
   if (!triangles || !(options.ErrorBudget > 0.0) || options.DebugView != View::Final ||
-    !terms.LightSums || terms.PositionalAmbient || !smooth || shadowed || !options.Specialize)
+    !terms.LightSums || terms.PositionalAmbient || !smooth || shadowed || !options.Specialize ||
+    options.SpecularAntiAliasing)
   {
     return Mode::PerFragment;
   }

@@ -212,6 +212,12 @@ void vtkPhongSurfaceRepresentation::SetErrorBudget(double levels)
 }
 
 //------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::SetSpecularAntiAliasing(int on)
+{
+  this->LightingSettings->SetSpecularAntiAliasing(on != 0);
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetLightingWithoutLights(int on)
 {
   this->LightingSettings->SetLightingWithoutLights(on != 0);

@@ -76,14 +76,16 @@ public:
    * vtkPhongLightingSettings object (where each is documented): the debug view
    * (vtkPhongLightingSettings::DebugViews; default 0, Final), the light the SingleLight view
    * shows, light culling's bound (default 0.5 / 255; NaN refused), the error budget in
-   * 8-bit levels (default 0, the exact mode; vtkPhongLightingSettings::SetErrorBudget), and
-   * whether surfaces with no light switched on show emission and ambient (default off:
+   * 8-bit levels (default 0, the exact mode; vtkPhongLightingSettings::SetErrorBudget),
+   * specular anti-aliasing (default off; vtkPhongLightingSettings::SetSpecularAntiAliasing),
+   * and whether surfaces with no light switched on show emission and ambient (default off:
    * unlit, as ParaView's Surface).
    */
   void SetDebugView(int view);
   void SetDebugLightIndex(int index);
   void SetLightCullingBound(double bound);
   void SetErrorBudget(double levels);
+  void SetSpecularAntiAliasing(int on);
   void SetLightingWithoutLights(int on);
 
   /**

@@ -210,6 +210,7 @@ def _mapper_for(part, settings, progress):
     mapper.SetDebugView(views[settings["debug_view"]])
     mapper.SetDebugLightIndex(settings["debug_light"])
     mapper.SetErrorBudget(settings["error_budget"])
+    mapper.SetSpecularAntiAliasing(settings["specular_aa"])
     progress.observe(mapper.GetNormalsGenerator(), "computing normals")
     return mapper
 

@@ -31,6 +31,7 @@ DEFAULTS = {
     "debug_view": "final",
     "debug_light": 0,
     "error_budget": 0.0,  # levels; 0 is the exact mode
+    "specular_aa": False,  # the highlights averaged over each pixel
     "material": {
         "color": None,  # None: the file's colours, else light grey
         "ambient": 0.1,
@@ -138,6 +139,8 @@ def _shading_settings(scene):
         settings["debug_light"] = int(_number(scene["debug_light"], "debug_light", 0, 1e6))
     if "error_budget" in scene:
         settings["error_budget"] = _number(scene["error_budget"], "error_budget", 0, 255)
+    if "specular_aa" in scene:
+        settings["specular_aa"] = _boolean(scene["specular_aa"], "specular_aa")
     return settings
 
 

@@ -55,7 +55,7 @@ scene file (--scene FILE.json), every key optional, flags win over it:
   {
     "size": [W, H], "background": [R, G, B], "transparent": false,
     "lobe": "blinn-phong", "interpolation": "phong",
-    "debug_view": "final", "debug_light": 0, "error_budget": 0,
+    "debug_view": "final", "debug_light": 0, "error_budget": 0, "specular_aa": false,
     "renderer_ambient": [1, 1, 1],
     "camera": {"azimuth": 30, "elevation": 20, "zoom": 1},
     "material": {"color": [R, G, B], "ambient": 0.1, "diffuse": 0.8,
@@ -227,6 +227,9 @@ def _add_debug_and_normals_options(parser):
                         metavar="LEVELS",
                         help="how far each pixel may stray from the exact model, in 8-bit "
                         "levels, for speed (default 0: exact; docs/lighting-model.md)")
+    parser.add_argument("--specular-aa", action="store_true", default=None,
+                        help="average each highlight over its pixel: no sparkle or flicker "
+                        "from highlights narrower than a pixel (default off)")
     parser.add_argument("--normals-weighting", choices=WEIGHTINGS,
                         help="weighting of computed normals (default max)")
     parser.add_argument("--feature-angle", type=_unit_range("--feature-angle", 0, 180),
@@ -250,7 +253,7 @@ def _apply_flags(settings, options):
              "transparent": options.transparent, "lobe": options.lobe,
              "interpolation": options.interpolation, "debug_view": options.debug_view,
              "debug_light": options.debug_light, "lights": options.light,
-             "error_budget": options.error_budget}
+             "error_budget": options.error_budget, "specular_aa": options.specular_aa}
     for key, value in flags.items():
         if value is not None:
             settings[key] = value

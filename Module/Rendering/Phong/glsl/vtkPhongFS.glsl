@@ -20,6 +20,25 @@ bool phongIsUnitLength(vec3 n)
   return finite && abs(length2 - 1.0) < 0.5;
 }
 //PHONG_ENDIF
+//PHONG_IF SPECULAR_ANTI_ALIASING
+// The shininess of the lobe averaged over the pixel's box. The lobe cos^n is about
+// exp(-n a^2 / 2) in the angle a from its axis: a Gaussian of variance 1/n per axis. The
+// shading normal N varies over the pixel by its screen derivatives, and their box adds
+// (|dN/dx|^2 + |dN/dy|^2) / 24 per axis (the Phong lobe's reflection vector turns twice as
+// fast: four times that). Capped where derivatives spike (silhouettes, a triangle's edge
+// against the background): a lobe keeps a shininess of 11 at least. Called from main's
+// uniform control flow, as derivatives must be.
+float phongFilteredShininess(float shininess, vec3 N)
+{
+  vec3 alongX = dFdx(N);
+  vec3 alongY = dFdy(N);
+  float spread = (dot(alongX, alongX) + dot(alongY, alongY)) / 24.0;
+//PHONG_IF LOBE_PHONG
+  spread *= 4.0;
+//PHONG_ENDIF
+  return shininess / (1.0 + shininess * min(spread, 0.09));
+}
+//PHONG_ENDIF
 // MATERIAL_UNIFORMS: VTK's material colours are uniform (no mapped scalars, no back
 // material). The products the shader needs are then uploaded ready-made: every uniform
 // read costs each fragment, and VTK's ambientIntensity * ambientColorUniform, ... would
@@ -149,7 +168,15 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SUMS_PER_FRAGMENT
+//PHONG_IF !SPECULAR_ANTI_ALIASING
   phongLightSums phongSums = phongSumLights(vertexVC.xyz, phongNormalVC, phongViewVC, specularPower);
+//PHONG_ENDIF
+//PHONG_IF SPECULAR_ANTI_ALIASING
+  // The lobe averaged over the pixel, scaled to keep its energy (2 pi / (n + 1) on the sphere).
+  float phongShininess = phongFilteredShininess(specularPower, phongNormalVC);
+  phongLightSums phongSums = phongSumLights(vertexVC.xyz, phongNormalVC, phongViewVC, phongShininess);
+  phongSums.specular *= (phongShininess + 1.0) / (specularPower + 1.0);
+//PHONG_ENDIF
 //PHONG_ENDIF
 //PHONG_IF SUMS_PER_VERTEX
   phongLightSums phongSums;

@@ -56,7 +56,7 @@ for kind, names in setters.items():
 # 2. Each mapper setter reaches the settings object; defaults and clamps are the object's.
 values = {"DebugView": 6, "DebugLightIndex": 3, "ShaderSpecialization": False,
           "InterpolatedDotProducts": False, "LightCullingBound": 0.25, "ErrorBudget": 1.5,
-          "LightingWithoutLights": True, "DepthPrePass": 1,
+          "SpecularAntiAliasing": True, "LightingWithoutLights": True, "DepthPrePass": 1,
           "DepthPrePassOcclusionCulling": False, "ClosedSurfaceCulling": False,
           "MaximumNumberOfShaderPrograms": 7}
 defaults = Settings()
