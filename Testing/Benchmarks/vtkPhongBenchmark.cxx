@@ -659,6 +659,19 @@ void AddCullingContenders(MeshContest& contest, vtkPolyData* mesh)
     AddCulledFloor(mesh, contest.Actors[Unlit]->GetProperty(), contest.Scene.Renderer));
 }
 
+// The sphere of 130k triangles (quick: 2k) and the meshes given, with their normals.
+std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> SphereAndMeshes(
+  const std::vector<std::string>& meshFiles, bool quick)
+{
+  std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> meshes;
+  meshes.emplace_back("sphere 256", Sphere(quick ? 32 : 256));
+  for (const auto& file : meshFiles)
+  {
+    meshes.push_back(MeshWithNormals(file));
+  }
+  return meshes;
+}
+
 // Every light kind at 1, 8 and 32 lights (and VTK's headlight) on the sphere and on each mesh
 // given: the unlit floor (also with back faces culled), stock, vtkPhong (also drawing the
 // back faces), ratios to stock and to the floor.
@@ -669,12 +682,7 @@ void KindSection(const std::vector<std::string>& meshFiles, bool quick)
     "\n== Frame time by light kind and count (%dx%d, Phong interpolation; ms) ==\n", width, height);
   std::printf("%-22s %-15s %9s %9s %9s %9s %9s %9s %9s %9s %9s\n", "mesh", "lights", "unlit",
     "unl cull", "stock", "vtkPhong", "no cull", "ours/stk", "nocl/stk", "ucul/stk", "ours/unl");
-  std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> meshes;
-  meshes.emplace_back("sphere 256", Sphere(quick ? 32 : 256));
-  for (const auto& file : meshFiles)
-  {
-    meshes.push_back(MeshWithNormals(file));
-  }
+  const auto meshes = SphereAndMeshes(meshFiles, quick);
   std::vector<std::string> sets = { "1 headlight" };
   for (const char* kind : { "directional", "point", "spot", "mixed" })
   {
@@ -1093,12 +1101,7 @@ void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
     std::printf(" %22s", ("budget " + std::to_string(budget).substr(0, 3)).c_str());
   }
   std::printf(" %8s %8s %8s %8s\n", "1/stock", "1/exact", "0.5/exa", "3/stock");
-  std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> meshes;
-  meshes.emplace_back("sphere 256", Sphere(quick ? 32 : 256));
-  for (const auto& file : meshFiles)
-  {
-    meshes.push_back(MeshWithNormals(file));
-  }
+  const auto meshes = SphereAndMeshes(meshFiles, quick);
   const std::vector<std::string> sets = quick
     ? std::vector<std::string>{ "8 directional" }
     : std::vector<std::string>{ "1 directional", "8 directional", "8 point", "8 spot", "8 mixed" };
@@ -1160,12 +1163,7 @@ void AntiAliasingSection(const std::vector<std::string>& meshFiles, bool quick)
   const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
   std::printf("\n== Specular anti-aliasing (%dx%d; ms) ==\n", width, height);
   std::printf("%-22s %-15s %8s %8s %8s\n", "mesh", "lights", "off", "on", "on/off");
-  std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> meshes;
-  meshes.emplace_back("sphere 256", Sphere(quick ? 32 : 256));
-  for (const auto& file : meshFiles)
-  {
-    meshes.push_back(MeshWithNormals(file));
-  }
+  const auto meshes = SphereAndMeshes(meshFiles, quick);
   for (const auto& mesh : meshes)
   {
     View view(width, height);

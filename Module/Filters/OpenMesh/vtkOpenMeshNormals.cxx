@@ -22,16 +22,7 @@ struct vtkOpenMeshNormals::Internals
   vtkOpenMeshNormalsWorkspace Workspace;
   // The cells of the last execution computed point by point: the same cells again (only the
   // points moved) are an animation, which the kept topology serves faster.
-  vtkCellArray* PointByPointPolys = nullptr;
-  vtkMTimeType PointByPointPolysTime = 0;
-  vtkIdType PointByPointPoints = -1;
-
-  bool SameCellsAsPointByPoint(vtkPolyData* input) const
-  {
-    return this->PointByPointPolys == input->GetPolys() &&
-      this->PointByPointPolysTime == input->GetPolys()->GetMTime() &&
-      this->PointByPointPoints == input->GetNumberOfPoints();
-  }
+  vtkOpenMeshNormalsDetail::CellsStamp PointByPointCells;
 };
 
 //------------------------------------------------------------------------------
@@ -137,9 +128,7 @@ bool vtkOpenMeshNormals::ComputeNormals(vtkPolyData* input, vtkPolyData* output)
       case vtkOpenMeshNormalsPointByPoint::Result::Computed:
         this->ComputedPointByPoint = true;
         this->Internal.reset(new Internals); // a topology of other cells: its memory back
-        this->Internal->PointByPointPolys = input->GetPolys();
-        this->Internal->PointByPointPolysTime = input->GetPolys()->GetMTime();
-        this->Internal->PointByPointPoints = input->GetNumberOfPoints();
+        this->Internal->PointByPointCells.Record(input);
         return true;
       case vtkOpenMeshNormalsPointByPoint::Result::Aborted:
         return false;
@@ -215,7 +204,7 @@ bool vtkOpenMeshNormals::MayComputePointByPoint(vtkPolyData* input) const
 {
   return this->PointByPoint && this->ComputePointNormals && !this->ComputeCellNormals &&
     !this->AutoOrientNormals && !this->FlipNormals && !this->IncrementalConstruction &&
-    !this->AlwaysHalfedgeMesh && !this->Internal->SameCellsAsPointByPoint(input) &&
+    !this->AlwaysHalfedgeMesh && !this->Internal->PointByPointCells.Matches(input) &&
     !this->Internal->Topology.Matches(input, this->Consistency || this->AutoOrientNormals,
       this->NonManifoldTraversal != 0, false, false) &&
     vtkOpenMeshNormalsPointByPoint::Takes(input);

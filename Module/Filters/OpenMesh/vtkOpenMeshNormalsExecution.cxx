@@ -159,38 +159,25 @@ void vtkOpenMeshNormalsExecution::ComputeFaceNormal(Index f)
     sum[1] += n[1];
     sum[2] += n[2];
   }
-  const double length = std::sqrt(Dot(sum, sum));
-  const bool valid = finite && length > 0.0 && std::isfinite(length);
-  workspace.FaceValid[f] = valid;
-  workspace.FaceLength[f] = length;
-  const double scale = valid ? 1.0 / length : 0.0;
-  workspace.UnitNormal[f] = { scale * sum[0], scale * sum[1], scale * sum[2] };
+  const FaceNormal face = MakeFaceNormal(sum, finite);
+  workspace.FaceValid[f] = face.Valid;
+  workspace.FaceLength[f] = face.Length;
+  workspace.UnitNormal[f] = face.Unit;
   if (this->Triangles)
   {
-    this->StoreTriangleCornerWeights<Weighting>(first, valid, length);
+    this->StoreTriangleCornerWeights<Weighting>(first, face);
   }
 }
 
 //------------------------------------------------------------------------------
 template <typename Weighting>
-void vtkOpenMeshNormalsExecution::StoreTriangleCornerWeights(Index first, bool valid, double length)
+void vtkOpenMeshNormalsExecution::StoreTriangleCornerWeights(Index first, const FaceNormal& face)
 {
   const double* p[3] = { this->Position(first), this->Position(first + 1),
     this->Position(first + 2) };
   for (int k = 0; k < 3; ++k)
   {
-    double weight = 0.0;
-    if (valid)
-    {
-      const Vector e1 = Subtract(p[(k + 1) % 3], p[k]);
-      const Vector e2 = Subtract(p[(k + 2) % 3], p[k]);
-      weight = Weighting::TriangleCornerWeight(length, e1, e2);
-      if (!std::isfinite(weight))
-      {
-        weight = 0.0;
-      }
-    }
-    this->Workspace.CornerWeight[first + k] = static_cast<float>(weight);
+    this->Workspace.CornerWeight[first + k] = TriangleCornerWeightAt<Weighting>(p, k, face);
   }
 }
 

@@ -26,6 +26,11 @@
 #include "vtkSmartPointer.h"
 
 class vtkIdList;
+
+namespace vtkOpenMeshNormalsDetail
+{
+struct FaceNormal;
+}
 class vtkOpenMeshNormalsTopology;
 class vtkPolyData;
 
@@ -156,7 +161,7 @@ private:
   template <typename Weighting>
   void ComputeFaceNormal(Index face);
   template <typename Weighting>
-  void StoreTriangleCornerWeights(Index first, bool valid, double length);
+  void StoreTriangleCornerWeights(Index first, const vtkOpenMeshNormalsDetail::FaceNormal& face);
   Buffer<signed char> ComputeComponentSigns() const;
   void ApplyFaceSigns(const Buffer<signed char>& componentSign);
   template <typename Contribution>

@@ -186,10 +186,10 @@ private:
   // weight, as vtkOpenMeshNormalsExecution::ComputeFaceNormal computes them.
   bool ReadCorner(Index c, vtkIdType p, FanEntry& entry) const
   {
-    const Index face = c - c % 3, k = c % 3;
-    const vtkIdType ids[3] = { static_cast<vtkIdType>(this->Connectivity[face]),
-      static_cast<vtkIdType>(this->Connectivity[face + 1]),
-      static_cast<vtkIdType>(this->Connectivity[face + 2]) };
+    const Index first = c - c % 3, k = c % 3; // the face's first corner, and c's place
+    const vtkIdType ids[3] = { static_cast<vtkIdType>(this->Connectivity[first]),
+      static_cast<vtkIdType>(this->Connectivity[first + 1]),
+      static_cast<vtkIdType>(this->Connectivity[first + 2]) };
     entry.Corner = c;
     entry.Next = ids[(k + 1) % 3];
     entry.Previous = ids[(k + 2) % 3];
@@ -205,20 +205,12 @@ private:
         x[v][a] = static_cast<double>(this->Coordinates[3 * ids[v] + a]);
       }
     }
-    const Vector n = Cross(Subtract(x[1], x[0]), Subtract(x[2], x[0]));
-    const double length = std::sqrt(Dot(n, n));
-    entry.Valid =
-      IsFinite(x[0]) && IsFinite(x[1]) && IsFinite(x[2]) && length > 0.0 && std::isfinite(length);
-    const double scale = entry.Valid ? 1.0 / length : 0.0;
-    entry.Unit = { scale * n[0], scale * n[1], scale * n[2] };
-    double weight = 0.0;
-    if (entry.Valid)
-    {
-      weight = Weighting::TriangleCornerWeight(
-        length, Subtract(x[(k + 1) % 3], x[k]), Subtract(x[(k + 2) % 3], x[k]));
-      weight = std::isfinite(weight) ? weight : 0.0;
-    }
-    entry.Weight = static_cast<float>(weight);
+    const FaceNormal face = MakeFaceNormal(Cross(Subtract(x[1], x[0]), Subtract(x[2], x[0])),
+      IsFinite(x[0]) && IsFinite(x[1]) && IsFinite(x[2]));
+    entry.Valid = face.Valid;
+    entry.Unit = face.Unit;
+    const double* const corners[3] = { x[0], x[1], x[2] };
+    entry.Weight = TriangleCornerWeightAt<Weighting>(corners, static_cast<int>(k), face);
     return true;
   }
 

@@ -290,14 +290,29 @@ void Circulate(const HalfedgeMesh& mesh, Index v, Visit&& visit)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenMeshNormalsTopology::Matches(
-  vtkPolyData* input, bool consistency, bool traversal, bool incremental, bool halfedgeMesh) const
+void vtkOpenMeshNormalsDetail::CellsStamp::Record(vtkPolyData* input)
+{
+  this->Polys = input->GetPolys();
+  this->PolysTime = this->Polys->GetMTime();
+  this->Strips = input->GetStrips();
+  this->StripsTime = this->Strips->GetMTime();
+  this->NumberOfPoints = input->GetNumberOfPoints();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenMeshNormalsDetail::CellsStamp::Matches(vtkPolyData* input) const
 {
   vtkCellArray* polys = input->GetPolys();
   vtkCellArray* strips = input->GetStrips();
-  return this->Valid && this->Polys == polys && this->PolysTime == polys->GetMTime() &&
-    this->Strips == strips && this->StripsTime == strips->GetMTime() &&
-    this->NumberOfPoints == input->GetNumberOfPoints() && this->Consistency == consistency &&
+  return this->Polys == polys && this->PolysTime == polys->GetMTime() && this->Strips == strips &&
+    this->StripsTime == strips->GetMTime() && this->NumberOfPoints == input->GetNumberOfPoints();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenMeshNormalsTopology::Matches(
+  vtkPolyData* input, bool consistency, bool traversal, bool incremental, bool halfedgeMesh) const
+{
+  return this->Valid && this->Cells.Matches(input) && this->Consistency == consistency &&
     this->NonManifoldTraversal == traversal && this->Incremental == incremental &&
     this->AlwaysHalfedgeMesh == halfedgeMesh;
 }
@@ -349,11 +364,7 @@ bool vtkOpenMeshNormalsTopology::Build(vtkPolyData* input, bool consistency, boo
   }
   filter->UpdateProgress(0.7);
 
-  this->Polys = input->GetPolys();
-  this->PolysTime = this->Polys->GetMTime();
-  this->Strips = input->GetStrips();
-  this->StripsTime = this->Strips->GetMTime();
-  this->NumberOfPoints = inputPoints;
+  this->Cells.Record(input);
   this->Consistency = consistency;
   this->NonManifoldTraversal = traversal;
   this->Incremental = incremental;

@@ -70,6 +70,21 @@ struct FaceList
   }
 };
 
+// Which cells something was computed from: the polygon and strip arrays (the same objects,
+// unmodified since) and the number of points. The same stamp again means that only the
+// points may have moved.
+struct CellsStamp
+{
+  vtkCellArray* Polys = nullptr;
+  vtkMTimeType PolysTime = 0;
+  vtkCellArray* Strips = nullptr;
+  vtkMTimeType StripsTime = 0;
+  vtkIdType NumberOfPoints = -1;
+
+  void Record(vtkPolyData* input);
+  bool Matches(vtkPolyData* input) const;
+};
+
 // How often long serial loops look at AbortExecute.
 constexpr Index AbortCheckInterval = 1 << 16;
 
@@ -219,11 +234,7 @@ private:
   bool FillFanFromTwins(Index vertex, const PointCorners& around, const Buffer<Index>& twins);
 
   // What the topology was built from.
-  vtkCellArray* Polys = nullptr;
-  vtkMTimeType PolysTime = 0;
-  vtkCellArray* Strips = nullptr;
-  vtkMTimeType StripsTime = 0;
-  vtkIdType NumberOfPoints = -1;
+  vtkOpenMeshNormalsDetail::CellsStamp Cells;
   bool Consistency = false;
   bool NonManifoldTraversal = false;
   bool Incremental = false;

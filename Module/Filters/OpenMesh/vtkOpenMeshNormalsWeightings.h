@@ -39,6 +39,38 @@ inline void AddScaledIfFinite(double weight, const Vector& n, Vector& sum)
   }
 }
 
+// A face's unit normal from its Newell vector (twice its area times the unit normal), as
+// every path stores it: valid where its corners are finite and its area is not zero.
+struct FaceNormal
+{
+  Vector Unit;
+  double Length;
+  bool Valid;
+};
+
+inline FaceNormal MakeFaceNormal(const Vector& newell, bool finite)
+{
+  const double length = std::sqrt(Dot(newell, newell));
+  const bool valid = finite && length > 0.0 && std::isfinite(length);
+  const double scale = valid ? 1.0 / length : 0.0;
+  return { { scale * newell[0], scale * newell[1], scale * newell[2] }, length, valid };
+}
+
+// The weight of corner k of the triangle with corners p (and normal face), in float as the
+// paths keep it: 0 for a face without a normal or a weight that overflowed.
+template <typename Weighting>
+float TriangleCornerWeightAt(const double* const p[3], int k, const FaceNormal& face)
+{
+  double weight = 0.0;
+  if (face.Valid)
+  {
+    weight = Weighting::TriangleCornerWeight(
+      face.Length, Subtract(p[(k + 1) % 3], p[k]), Subtract(p[(k + 2) % 3], p[k]));
+    weight = std::isfinite(weight) ? weight : 0.0;
+  }
+  return static_cast<float>(weight);
+}
+
 // A polygon's corner as the weightings see it: its face's unit normal,
 // Newell length and sign, and the corner's two edges, each computed only if
 // the weighting asks for it.

@@ -30,7 +30,7 @@
 
 namespace
 {
-constexpr int SamplesPerSide = 4; // 16 samples a pixel
+constexpr int SamplesPerSide = 4;  // 16 samples a pixel
 constexpr double NoFlicker = 0.01; // levels RMS: far below what shows
 
 struct Case
@@ -75,6 +75,21 @@ struct View
     vtkCamera* camera = this->Scene.Renderer->GetActiveCamera();
     camera->SetParallelProjection(true);
     camera->SetParallelScale(coarseSize / (4.0 * c.RadiusPixels));
+  }
+};
+
+// A case's two views of one sphere: one sample a pixel, and 16.
+struct Views
+{
+  const int Size; // the one-sample view's
+  vtkSmartPointer<vtkPolyData> Sphere = vtkPhongTest::MakeSphere(256);
+  View Coarse, Fine;
+
+  explicit Views(const Case& c)
+    : Size(static_cast<int>(2.0 * c.RadiusPixels) + 16)
+    , Coarse(c, Size, Size, Sphere)
+    , Fine(c, SamplesPerSide * Size, Size, Sphere)
+  {
   }
 };
 
@@ -206,8 +221,10 @@ void Accumulate(const Frame& frame, const Frame* last, Figures& figures)
 }
 
 // One frame: one exact sample per pixel, the filtered picture, and the 16-sample reference.
-Frame Draw(View& coarse, View& fine, const Case& c, int frame)
+Frame Draw(Views& views, const Case& c, int frame)
 {
+  View& coarse = views.Coarse;
+  View& fine = views.Fine;
   SetLight(coarse, c, frame);
   SetLight(fine, c, frame);
   vtkNew<vtkPhongFloatRenderPass> pass;
@@ -221,21 +238,18 @@ Frame Draw(View& coarse, View& fine, const Case& c, int frame)
   reference->SetRenderer(fine.Scene.Renderer);
   reference->SetActor(fine.Scene.Renderer->GetActors()->GetLastActor());
   auto shaded = vtkPhongTest::ShadeGBuffer(fine.Scene, finePass, reference);
-  const int size = coarse.Scene.Window->GetSize()[0];
-  result.Reference = shaded ? PixelAverage(shaded, size) : nullptr;
+  result.Reference = shaded ? PixelAverage(shaded, views.Size) : nullptr;
   return result;
 }
 
 Figures Measure(const Case& c, int frames)
 {
-  const int size = static_cast<int>(2.0 * c.RadiusPixels) + 16;
-  auto sphere = vtkPhongTest::MakeSphere(256);
-  View coarse(c, size, size, sphere), fine(c, SamplesPerSide * size, size, sphere);
+  Views views(c);
   Figures figures;
   Frame last;
   for (int f = 0; f < frames; ++f)
   {
-    Frame frame = Draw(coarse, fine, c, f);
+    Frame frame = Draw(views, c, f);
     if (!frame.Reference)
     {
       figures.Valid = false;
@@ -286,10 +300,8 @@ bool CheckNarrowLobe(const Case& c, int frames)
 // A lobe several pixels wide: the filter must not change it (S3).
 bool CheckWideLobe(const Case& c)
 {
-  const int size = static_cast<int>(2.0 * c.RadiusPixels) + 16;
-  auto sphere = vtkPhongTest::MakeSphere(256);
-  View coarse(c, size, size, sphere), fine(c, SamplesPerSide * size, size, sphere);
-  const Frame frame = Draw(coarse, fine, c, 0);
+  Views views(c);
+  const Frame frame = Draw(views, c, 0);
   double squares = 0.0;
   vtkIdType values = 0;
   for (vtkIdType p = 0; frame.Reference && p < frame.Reference->GetNumberOfPoints(); ++p)
