@@ -1,9 +1,12 @@
 #include "vtkPhongClosedSurface.h"
 
 #include "vtkActor.h"
+#include "vtkArrayDispatch.h"
 #include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
@@ -19,7 +22,6 @@
 #include "vtkPhongBackgroundTask.h"
 #include "vtkPhongBufferBlocks.h"
 #include "vtkPhongOpenGL.h"
-#include "vtkPhongRadixSort.h"
 #include "vtkPhongShaderCode.h"
 #include "vtkPhongVisibleClusters.h"
 #include "vtkPoints.h"
@@ -53,8 +55,143 @@ constexpr double FlatVolumeShare = 1e-9;
 // How many ray-triangle tests the check of cavities may take (about 0.1 s).
 constexpr size_t MaximumEnclosureTests = size_t(16) << 20;
 
-// Edge keys pack two point ids below 2^31 and a direction bit.
+// An edge's other point, below 2^31, is packed with its direction in 32 bits.
 constexpr std::uint64_t LargestPackedId = (std::uint64_t(1) << 31) - 1;
+
+// The welding's mark of a point that is not finite.
+constexpr std::uint32_t NotFinite = std::numeric_limits<std::uint32_t>::max();
+
+// How many edges the closedness check gathers at a time: a quarter of them, at least 2^16
+// and at most 2^24 (64 MB), a fraction of the index buffer's copy.
+size_t EdgesPerRange(size_t edges)
+{
+  return std::min(std::max(edges / 4, size_t(1) << 16), size_t(1) << 24);
+}
+
+template <typename Position>
+bool IsFinite(const Position& x)
+{
+  return vtkMath::IsFinite(x[0]) && vtkMath::IsFinite(x[1]) && vtkMath::IsFinite(x[2]);
+}
+
+// splitmix64's finalizer: a hash of 64 bits.
+std::uint64_t Mix(std::uint64_t x)
+{
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+// A closed, consistently oriented surface uses each edge once in each direction, so over all
+// its directed edges (a, b) the sum of f(a, b) - f(b, a) is exactly 0 (modulo 2^64) for any
+// f of the two corners. With f(a, b) = h(a) Mix(h(b)), h a hash of a point (`hash`), an open
+// surface leaves its boundary loops, whose sum is not 0 but with a chance of 2^-64: false
+// means open (or inconsistent) for certain, with one pass and no memory, before the exact
+// check (IsClosedAndConsistent). Degenerate triangles cancel themselves. A corner hashed 0
+// rules the surface out; an index that names no point is left to the exact check, which
+// refuses it.
+template <typename Hash>
+bool EdgesMayPair(const std::vector<unsigned int>& indices, size_t points, const Hash& hash)
+{
+  std::uint64_t sum = 0;
+  for (size_t i = 0; i + 2 < indices.size(); i += 3)
+  {
+    std::uint64_t h[3], g[3]; // f(a, b) = h(a) g(b)
+    for (int k = 0; k < 3; ++k)
+    {
+      if (indices[i + k] >= points)
+      {
+        return true;
+      }
+      h[k] = hash(indices[i + k]);
+      if (h[k] == 0)
+      {
+        return false;
+      }
+      g[k] = Mix(h[k] ^ 0x9e3779b97f4a7c15ull);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const int next = (k + 1) % 3;
+      sum += h[k] * g[next] - h[next] * g[k];
+    }
+  }
+  return sum == 0;
+}
+
+// Sorts [first, last): a point has a handful of edges, where insertion beats std::sort.
+void SortFew(std::uint32_t* first, std::uint32_t* last)
+{
+  if (last - first > 16)
+  {
+    std::sort(first, last);
+    return;
+  }
+  for (std::uint32_t* i = first + 1; i < last; ++i)
+  {
+    const std::uint32_t value = *i;
+    std::uint32_t* j = i;
+    for (; j > first && *(j - 1) > value; --j)
+    {
+      *j = *(j - 1);
+    }
+    *j = value;
+  }
+}
+
+// Calls `work` with the input's positions as their own array type where it is one of
+// vtkArrayDispatch's real arrays (as fast as a pointer), else as a vtkDataArray.
+template <typename Work>
+void WithPositions(vtkPolyData* input, Work&& work)
+{
+  vtkDataArray* positions = input->GetPoints()->GetData();
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(positions, work))
+  {
+    work(positions);
+  }
+}
+
+// Each point's representative, the lowest id at its position, or NotFinite: the points
+// sorted by position where they are (no copy of the positions).
+template <typename Positions>
+std::vector<std::uint32_t> WeldPositions(const Positions& positions)
+{
+  const auto count = static_cast<std::uint32_t>(positions.size());
+  std::vector<std::uint32_t> order;
+  order.reserve(count);
+  for (std::uint32_t p = 0; p < count; ++p)
+  {
+    if (IsFinite(positions[p]))
+    {
+      order.push_back(p);
+    }
+  }
+  auto compare = [&positions](std::uint32_t a, std::uint32_t b)
+  {
+    const auto x = positions[a], y = positions[b];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (x[axis] != y[axis])
+      {
+        return x[axis] < y[axis] ? -1 : 1;
+      }
+    }
+    return 0;
+  };
+  std::sort(order.begin(), order.end(),
+    [&compare](std::uint32_t a, std::uint32_t b)
+    {
+      const int position = compare(a, b);
+      return position != 0 ? position < 0 : a < b;
+    });
+  std::vector<std::uint32_t> welded(count, NotFinite);
+  for (size_t k = 0; k < order.size(); ++k)
+  {
+    const bool repeated = k > 0 && compare(order[k], order[k - 1]) == 0;
+    welded[order[k]] = repeated ? welded[order[k - 1]] : order[k];
+  }
+  return welded;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -141,14 +278,20 @@ void vtkPhongClosedSurface::CollectBackground(bool wait)
 }
 
 //------------------------------------------------------------------------------
+// Most closed meshes are closed by their point ids already, and need no welding: its sort
+// of the points is the analysis's longest step. A surface closed by ids is closed, whatever
+// points share a position (two solids touching at a corner); the welding only finds more
+// (split normals, per-face points).
 int vtkPhongClosedSurface::Analyse(std::vector<unsigned int>& indices, vtkPolyData* input)
 {
-  if (MayBeClosed(indices, input) && WeldTriangles(indices, WeldPoints(input)) &&
-    IsClosedAndConsistent(indices))
+  const bool closedByIds = MayBeClosedByIds(indices, input) && IsClosedAndConsistent(indices);
+  if (!closedByIds &&
+    !(MayBeClosedAtPositions(indices, input) && WeldTriangles(indices, WeldPoints(input)) &&
+      IsClosedAndConsistent(indices)))
   {
-    return Orient(indices, input);
+    return 0;
   }
-  return 0;
+  return Orient(indices, input);
 }
 
 //------------------------------------------------------------------------------
@@ -177,113 +320,89 @@ bool vtkPhongClosedSurface::HasConcavePolygons(vtkPolyData* input)
 
 //------------------------------------------------------------------------------
 // Each point's representative: the lowest id at the same position (split normals and
-// per-face attributes duplicate points, and the surface is closed across the copies).
-std::vector<vtkIdType> vtkPhongClosedSurface::WeldPoints(vtkPolyData* input)
+// per-face attributes duplicate points, and the surface is closed across the copies);
+// NotFinite for a point that is not finite.
+std::vector<std::uint32_t> vtkPhongClosedSurface::WeldPoints(vtkPolyData* input)
 {
-  vtkPoints* points = input->GetPoints();
-  const vtkIdType count = points->GetNumberOfPoints();
-  std::vector<std::array<double, 3>> positions(count);
-  std::vector<vtkIdType> order;
-  order.reserve(count);
-  for (vtkIdType p = 0; p < count; ++p)
+  std::vector<std::uint32_t> welded;
+  if (static_cast<std::uint64_t>(input->GetNumberOfPoints()) <= LargestPackedId + 1)
   {
-    points->GetPoint(p, positions[p].data());
-    if (vtkMath::IsFinite(positions[p][0]) && vtkMath::IsFinite(positions[p][1]) &&
-      vtkMath::IsFinite(positions[p][2]))
-    {
-      order.push_back(p);
-    }
-  }
-  std::sort(order.begin(), order.end(),
-    [&positions](vtkIdType a, vtkIdType b)
-    { return positions[a] != positions[b] ? positions[a] < positions[b] : a < b; });
-  std::vector<vtkIdType> welded(count, -1);
-  for (size_t k = 0; k < order.size(); ++k)
-  {
-    const bool same = k > 0 && positions[order[k]] == positions[order[k - 1]];
-    welded[order[k]] = same ? welded[order[k - 1]] : order[k];
+    WithPositions(input,
+      [&welded](auto* positions)
+      { welded = WeldPositions(vtk::DataArrayTupleRange<3>(positions)); });
   }
   return welded;
 }
 
 //------------------------------------------------------------------------------
-// A closed, consistently oriented surface uses each edge once in each direction, so over all
-// its directed edges (a, b) the sum of f(a, b) - f(b, a) is exactly 0 (modulo 2^64) for any
-// f of the two corners' positions. With f(a, b) = h(a) g(h(b)), h and g hashes, an open
-// surface leaves its boundary loops, whose sum is not 0 but with a chance of 2^-64: false
-// means open (or inconsistent) for certain, with one pass and a hash per point, before
-// the welding and the edge sort, which take 1 GB at 16M triangles (docs/results/
-// performance.md). Positions are hashed by their bits, as the welding compares them
-// (-0 made 0 first); degenerate triangles cancel themselves.
-bool vtkPhongClosedSurface::MayBeClosed(
+// Whether the triangles may be closed by their point ids; the exact check needs every point
+// finite too.
+bool vtkPhongClosedSurface::MayBeClosedByIds(
   const std::vector<unsigned int>& indices, vtkPolyData* input)
 {
-  auto mix = [](std::uint64_t x)
-  {
-    // splitmix64's finalizer
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-  };
+  bool finite = true;
+  WithPositions(input,
+    [&finite](auto* array)
+    {
+      for (const auto x : vtk::DataArrayTupleRange<3>(array))
+      {
+        finite = finite && IsFinite(x);
+      }
+    });
+  return finite &&
+    EdgesMayPair(indices, static_cast<size_t>(input->GetNumberOfPoints()),
+      [](unsigned int p) { return Mix(p ^ 0x243f6a8885a308d3ull) | 1; });
+}
+
+//------------------------------------------------------------------------------
+// Whether the triangles may be closed once points at one position are one: each position
+// hashed by its bits, as the welding compares them (-0 made 0 first), 0 for one that is not
+// finite (which rules out a triangle it is a corner of).
+bool vtkPhongClosedSurface::MayBeClosedAtPositions(
+  const std::vector<unsigned int>& indices, vtkPolyData* input)
+{
   vtkPoints* points = input->GetPoints();
-  const vtkIdType count = points->GetNumberOfPoints();
-  std::vector<std::uint64_t> hashes(static_cast<size_t>(count));
-  for (vtkIdType p = 0; p < count; ++p)
+  std::vector<std::uint64_t> hashes(static_cast<size_t>(points->GetNumberOfPoints()));
+  for (size_t p = 0; p < hashes.size(); ++p)
   {
     double x[3];
-    points->GetPoint(p, x);
+    points->GetPoint(static_cast<vtkIdType>(p), x);
     std::uint64_t h = 0x243f6a8885a308d3ull;
     for (double coordinate : x)
     {
       const double zeroed = coordinate + 0.0; // -0 and +0: one position
       std::uint64_t bits;
       std::memcpy(&bits, &zeroed, sizeof(bits));
-      h = mix(h ^ bits);
+      h = Mix(h ^ bits);
     }
-    hashes[p] = h;
+    hashes[p] = !IsFinite(x) ? 0 : (h != 0 ? h : 1);
   }
-  std::uint64_t sum = 0;
-  for (size_t i = 0; i + 2 < indices.size(); i += 3)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const unsigned int from = indices[i + k], to = indices[i + (k + 1) % 3];
-      if (from >= hashes.size() || to >= hashes.size())
-      {
-        return true; // left to the exact check, which refuses it
-      }
-      const std::uint64_t a = hashes[from], b = hashes[to];
-      sum += a * mix(b ^ 0x9e3779b97f4a7c15ull) - b * mix(a ^ 0x9e3779b97f4a7c15ull);
-    }
-  }
-  return sum == 0;
+  return EdgesMayPair(indices, hashes.size(), [&hashes](unsigned int p) { return hashes[p]; });
 }
 
 //------------------------------------------------------------------------------
 // The triangles with welded corners, those with two corners at one point (no area, no
 // pixel) left out. False when a corner is not finite or an index names no point.
 bool vtkPhongClosedSurface::WeldTriangles(
-  std::vector<unsigned int>& indices, const std::vector<vtkIdType>& welded)
+  std::vector<unsigned int>& indices, const std::vector<std::uint32_t>& welded)
 {
   size_t kept = 0;
   for (size_t i = 0; i + 2 < indices.size(); i += 3)
   {
-    vtkIdType corners[3];
+    std::uint32_t corners[3];
     for (int k = 0; k < 3; ++k)
     {
       const unsigned int index = indices[i + k];
-      corners[k] = index < welded.size() ? welded[index] : -1;
-      if (corners[k] < 0 || static_cast<std::uint64_t>(corners[k]) > LargestPackedId)
+      corners[k] = index < welded.size() ? welded[index] : NotFinite;
+      if (corners[k] == NotFinite)
       {
         return false;
       }
     }
     if (corners[0] != corners[1] && corners[1] != corners[2] && corners[2] != corners[0])
     {
-      for (int k = 0; k < 3; ++k)
-      {
-        indices[kept++] = static_cast<unsigned int>(corners[k]);
-      }
+      std::copy_n(corners, 3, &indices[kept]);
+      kept += 3;
     }
   }
   indices.resize(kept);
@@ -291,37 +410,88 @@ bool vtkPhongClosedSurface::WeldTriangles(
 }
 
 //------------------------------------------------------------------------------
-// Every edge is used exactly twice, once in each direction: each undirected edge's key,
-// with the direction in the lowest bit, appears as the pair (key, key + 1) and only once.
+// Every edge is used exactly twice, once in each direction. Each edge is checked at its
+// lower point, a range of points at a time (EdgesPerRange), so that the memory stays a
+// fraction of the index buffer's; each range costs a pass over the triangles.
 bool vtkPhongClosedSurface::IsClosedAndConsistent(const std::vector<unsigned int>& triangles)
 {
-  const unsigned int largest = *std::max_element(triangles.begin(), triangles.end());
-  int bits = 1;
-  while (bits < 32 && (largest >> bits) != 0)
+  if (triangles.empty() || triangles.size() > std::numeric_limits<std::uint32_t>::max())
   {
-    ++bits;
+    return false; // a point's edges are counted in 32 bits
   }
-  std::vector<std::uint64_t> edges;
-  edges.reserve(triangles.size());
+  const unsigned int largest = *std::max_element(triangles.begin(), triangles.end());
+  if (largest > LargestPackedId)
+  {
+    return false; // an edge's other point and direction are packed in 32 bits
+  }
+  std::vector<std::uint32_t> edgesAt(size_t(largest) + 1, 0); // by their lower point
   for (size_t i = 0; i < triangles.size(); i += 3)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const std::uint64_t from = triangles[i + k];
-      const std::uint64_t to = triangles[i + (k + 1) % 3];
-      const std::uint64_t low = std::min(from, to), high = std::max(from, to);
-      edges.push_back((low << (bits + 1)) | (high << 1) | (from < to ? 0 : 1));
+      ++edgesAt[std::min(triangles[i + k], triangles[i + (k + 1) % 3])];
     }
   }
-  vtkPhongRadixSort(edges, 2 * bits + 1);
-  for (size_t e = 0; e < edges.size(); e += 2)
+  const size_t perRange = EdgesPerRange(triangles.size());
+  for (size_t first = 0; first < edgesAt.size();)
   {
-    const bool paired = e + 1 < edges.size() && (edges[e] & 1) == 0 && edges[e + 1] == edges[e] + 1;
-    const bool once = e + 2 >= edges.size() || (edges[e + 2] >> 1) != (edges[e] >> 1);
-    if (!paired || !once)
+    size_t last = first, edges = 0;
+    while (last < edgesAt.size() && (last == first || edges + edgesAt[last] <= perRange))
+    {
+      edges += edgesAt[last++];
+    }
+    if (!ArePaired(triangles, edgesAt, static_cast<unsigned int>(first),
+          static_cast<unsigned int>(last), edges))
     {
       return false;
     }
+    first = last;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Whether the `edges` edges whose lower point is in [first, last) (`edgesAt` of each) each
+// appear once in each direction. Gathered by their lower point, as the higher one with the
+// direction in the lowest bit, and sorted, each point's edges must come as pairs (2 h, 2 h + 1)
+// with no h twice.
+bool vtkPhongClosedSurface::ArePaired(const std::vector<unsigned int>& triangles,
+  const std::vector<std::uint32_t>& edgesAt, unsigned int first, unsigned int last, size_t edges)
+{
+  std::vector<std::uint32_t> ends(last - first); // where each point's next edge goes
+  std::uint32_t start = 0;
+  for (unsigned int p = first; p < last; ++p)
+  {
+    ends[p - first] = start;
+    start += edgesAt[p];
+  }
+  std::vector<std::uint32_t> others(edges);
+  for (size_t i = 0; i < triangles.size(); i += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const unsigned int from = triangles[i + k], to = triangles[i + (k + 1) % 3];
+      const unsigned int low = std::min(from, to);
+      if (low >= first && low < last)
+      {
+        others[ends[low - first]++] = (std::max(from, to) << 1) | (from < to ? 0u : 1u);
+      }
+    }
+  }
+  std::uint32_t begin = 0;
+  for (const std::uint32_t end : ends)
+  {
+    SortFew(others.data() + begin, others.data() + end);
+    for (std::uint32_t e = begin; e < end; e += 2)
+    {
+      const bool paired = e + 1 < end && (others[e] & 1) == 0 && others[e + 1] == others[e] + 1;
+      const bool once = e + 2 >= end || (others[e + 2] >> 1) != (others[e] >> 1);
+      if (!paired || !once)
+      {
+        return false;
+      }
+    }
+    begin = end;
   }
   return true;
 }
@@ -331,34 +501,40 @@ bool vtkPhongClosedSurface::IsClosedAndConsistent(const std::vector<unsigned int
 // the volume each encloses (the divergence theorem: the sum of the tetrahedra its triangles
 // span with a common origin), its bounds and one of its points.
 std::vector<vtkPhongClosedSurface::Surface> vtkPhongClosedSurface::FindSurfaces(
-  const std::vector<unsigned int>& triangles, vtkPolyData* input, std::vector<size_t>& owner)
+  const std::vector<unsigned int>& triangles, vtkPolyData* input, std::vector<std::uint32_t>& owner)
 {
-  const std::vector<std::uint32_t> components =
-    vtkPhongVisibleClusters::ConnectedComponents(triangles, input);
-  vtkPoints* points = input->GetPoints();
+  owner = vtkPhongVisibleClusters::ConnectedComponents(triangles, input);
   double origin[3];
   vtkBoundingBox(input->GetBounds()).GetCenter(origin);
   std::vector<Surface> surfaces;
-  owner.assign(components.begin(), components.end());
-  for (size_t i = 0; i < triangles.size(); i += 3)
+  auto add = [&](auto* array)
   {
-    if (owner[i / 3] == surfaces.size()) // numbered in order of first appearance
+    const auto positions = vtk::DataArrayTupleRange<3>(array);
+    for (size_t i = 0; i < triangles.size(); i += 3)
     {
-      surfaces.emplace_back();
-      surfaces.back().Point = triangles[i];
+      if (owner[i / 3] == surfaces.size()) // numbered in order of first appearance
+      {
+        surfaces.emplace_back();
+        surfaces.back().Point = triangles[i];
+      }
+      Surface& surface = surfaces[owner[i / 3]];
+      double corners[3][3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const auto corner = positions[triangles[i + k]];
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          surface.Lower[axis] = std::min<double>(surface.Lower[axis], corner[axis]);
+          surface.Upper[axis] = std::max<double>(surface.Upper[axis], corner[axis]);
+          corners[k][axis] = corner[axis] - origin[axis];
+        }
+      }
+      double cross[3];
+      vtkMath::Cross(corners[1], corners[2], cross);
+      surface.Volume += vtkMath::Dot(corners[0], cross) / 6.0;
     }
-    Surface& surface = surfaces[owner[i / 3]];
-    double corners[3][3];
-    for (int k = 0; k < 3; ++k)
-    {
-      points->GetPoint(triangles[i + k], corners[k]);
-      surface.Box.AddPoint(corners[k]);
-      vtkMath::Subtract(corners[k], origin, corners[k]);
-    }
-    double cross[3];
-    vtkMath::Cross(corners[1], corners[2], cross);
-    surface.Volume += vtkMath::Dot(corners[0], cross) / 6.0;
-  }
+  };
+  WithPositions(input, add);
   return surfaces;
 }
 
@@ -369,11 +545,12 @@ std::vector<vtkPhongClosedSurface::Surface> vtkPhongClosedSurface::FindSurfaces(
 // (both sides of a sheet) bound no region and count for neither.
 int vtkPhongClosedSurface::Orient(const std::vector<unsigned int>& triangles, vtkPolyData* input)
 {
-  std::vector<size_t> owner;
+  std::vector<std::uint32_t> owner;
   const std::vector<Surface> surfaces = FindSurfaces(triangles, input, owner);
   auto isFlat = [](const Surface& surface)
   {
-    const double diagonal = surface.Box.GetDiagonalLength();
+    const double diagonal =
+      std::sqrt(vtkMath::Distance2BetweenPoints(surface.Lower, surface.Upper));
     return std::abs(surface.Volume) <= FlatVolumeShare * diagonal * diagonal * diagonal;
   };
   const auto largest = std::max_element(surfaces.begin(), surfaces.end(),
@@ -406,7 +583,8 @@ int vtkPhongClosedSurface::Orient(const std::vector<unsigned int>& triangles, vt
 // ray) less those it enters through. A ray that grazes an edge is tried again in another
 // direction; 0 when every direction grazes one.
 int vtkPhongClosedSurface::WindingNumber(vtkIdType point, size_t skip,
-  const std::vector<unsigned int>& triangles, const std::vector<size_t>& owner, vtkPolyData* input)
+  const std::vector<unsigned int>& triangles, const std::vector<std::uint32_t>& owner,
+  vtkPolyData* input)
 {
   static const double directions[3][3] = { { 1.0, 0.3217, 0.1793 }, { -0.2711, 1.0, 0.4127 },
     { 0.3331, -0.5177, -1.0 } };

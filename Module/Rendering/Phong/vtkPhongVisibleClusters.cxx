@@ -18,8 +18,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
-#include <unordered_map>
 #include <utility>
 
 namespace
@@ -263,9 +263,9 @@ void vtkPhongVisibleClusters::Split(std::vector<std::uint32_t>& order,
 std::vector<std::uint32_t> vtkPhongVisibleClusters::ConnectedComponents(
   const std::vector<unsigned int>& indices, vtkPolyData* input)
 {
-  std::vector<vtkIdType> parent(input->GetNumberOfPoints());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&parent](vtkIdType p)
+  std::vector<std::uint32_t> parent(input->GetNumberOfPoints()); // indices are 32-bit
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto root = [&parent](std::uint32_t p)
   {
     while (parent[p] != p)
     {
@@ -276,20 +276,30 @@ std::vector<std::uint32_t> vtkPhongVisibleClusters::ConnectedComponents(
   };
   for (size_t i = 0; i < indices.size(); i += 3)
   {
-    const vtkIdType a = root(indices[i]);
+    const std::uint32_t a = root(indices[i]);
     for (int k = 1; k < 3; ++k)
     {
-      const vtkIdType b = root(indices[i + k]);
+      const std::uint32_t b = root(indices[i + k]);
       parent[b] = a;
     }
   }
-  std::unordered_map<vtkIdType, std::uint32_t> numbers;
+  constexpr std::uint32_t unnumbered = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t>& numbers = parent; // each root's number, once the roots are found
   std::vector<std::uint32_t> components(indices.size() / 3);
+  std::uint32_t count = 0;
   for (size_t t = 0; t < components.size(); ++t)
   {
-    const auto inserted =
-      numbers.emplace(root(indices[3 * t]), static_cast<std::uint32_t>(numbers.size()));
-    components[t] = inserted.first->second;
+    components[t] = root(indices[3 * t]);
+  }
+  std::fill(numbers.begin(), numbers.end(), unnumbered);
+  for (std::uint32_t& component : components)
+  {
+    std::uint32_t& number = numbers[component];
+    if (number == unnumbered)
+    {
+      number = count++;
+    }
+    component = number;
   }
   return components;
 }

@@ -4,13 +4,16 @@
 // also states whether culling must be used.
 // - Used: a sphere, its cells reversed (culls the front faces), mirrored by the actor's
 //   matrix, both, in parallel projection, with cell colours, with the depth pre-pass, a cube
-//   whose points are split per face (welded back), a hollow sphere, contours with cavities,
-//   and CGAL's closed meshes (files nobody here wrote, read without normals: the mapper
-//   computes and splits them).
+//   whose points are split per face (welded back), two cubes sharing a face, a hollow
+//   sphere, a sphere of 79k triangles (checked in ranges of points) and with its points split
+//   per triangle, a point at NaN that no triangle uses, contours with cavities, CGAL's closed
+//   meshes (files nobody here wrote, read without normals: the mapper computes and splits
+//   them), and on a thread of its own a sphere of 318k triangles, also split per triangle.
 // - Not used, and still identical: the camera inside the sphere or the near plane cutting it
 //   (the inside shows), an open sphere, CGAL's meshes with holes, a sphere beside a reversed
 //   one, a concave polygon, a clipping plane, translucency, edges, wireframe, strips, a wide
-//   line beside the sphere, a point at NaN, and culling switched off.
+//   line beside the sphere, a point at NaN, a triangle drawn from both sides on a sphere (its
+//   edges used twice each way), and culling switched off.
 // - The composite mapper's blocks: culled where each helper's blocks together are closed
 //   (two spheres, a sphere cut in two blocks, with a block colour, two helpers), not where a
 //   block is hidden or translucent (the cut opens the sphere) or open.
@@ -19,6 +22,7 @@
 
 #include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
+#include "vtkCleanPolyData.h"
 #include "vtkColor.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkContourFilter.h"
@@ -34,6 +38,7 @@
 #include "vtkStripper.h"
 #include "vtkTriangleFilter.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -205,6 +210,65 @@ vtkSmartPointer<vtkPolyData> SplitCube()
   return triangles->GetOutput();
 }
 
+// Each triangle with points of its own, at its corners' positions: closed only with the
+// points at one position taken as one.
+vtkSmartPointer<vtkPolyData> SplitPerTriangle(vtkPolyData* mesh)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType cell = 0; cell < mesh->GetNumberOfPolys(); ++cell)
+  {
+    mesh->GetCellPoints(cell, ids);
+    triangles->InsertNextCell(ids->GetNumberOfIds());
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      triangles->InsertCellPoint(points->InsertNextPoint(mesh->GetPoint(ids->GetId(k))));
+    }
+  }
+  auto split = vtkSmartPointer<vtkPolyData>::New();
+  split->SetPoints(points);
+  split->SetPolys(triangles);
+  return split;
+}
+
+// The mesh with one more triangle and its reverse (their edges used twice each way, which
+// a sum of edges cannot tell from once): the triangle whose lowest point is the highest, so
+// that the closedness check, which goes through the edges by their lower point, meets them
+// last.
+vtkSmartPointer<vtkPolyData> WithTwoSidedTriangle(vtkPolyData* mesh)
+{
+  vtkNew<vtkIdList> ids, last;
+  vtkIdType highest = -1;
+  for (vtkIdType cell = 0; cell < mesh->GetNumberOfPolys(); ++cell)
+  {
+    mesh->GetCellPoints(cell, ids);
+    const vtkIdType lowest = std::min({ ids->GetId(0), ids->GetId(1), ids->GetId(2) });
+    if (lowest > highest)
+    {
+      highest = lowest;
+      last->DeepCopy(ids);
+    }
+  }
+  auto twoSided = vtkSmartPointer<vtkPolyData>::New();
+  twoSided->DeepCopy(mesh);
+  twoSided->GetPolys()->InsertNextCell(last);
+  const vtkIdType reversed[3] = { last->GetId(0), last->GetId(2), last->GetId(1) };
+  twoSided->GetPolys()->InsertNextCell(3, reversed);
+  return twoSided;
+}
+
+// Two cubes of 8 points each, side by side on a face: each closed by its own points, so
+// the two faces at one place are hidden in the solid (the welding would see each edge of
+// that face four times).
+vtkSmartPointer<vtkPolyData> CubesSharingAFace()
+{
+  vtkNew<vtkCleanPolyData> welded;
+  welded->SetInputData(SplitCube());
+  welded->Update();
+  return Appended(welded->GetOutput(), vtkPhongTest::Moved(welded->GetOutput(), 1.0, 0.0, 0.0));
+}
+
 void CheckClosedSurfaces(Checks& checks)
 {
   auto sphere = vtkPhongTest::MakeSphere(48);
@@ -231,6 +295,14 @@ void CheckClosedSurfaces(Checks& checks)
     prePass.Compare("sphere, depth pre-pass", true, checks);
   }
   CullingScene(SplitCube()).Compare("cube, points split per face", true, checks);
+  CullingScene(CubesSharingAFace()).Compare("two cubes sharing a face", true, checks);
+  // 79k triangles: the closedness check goes through the edges in 4 ranges of points.
+  auto fine = vtkPhongTest::MakeSphere(200);
+  CullingScene(fine).Compare("sphere of 79k triangles", true, checks, 2);
+  CullingScene(SplitPerTriangle(fine))
+    .Compare("sphere of 79k triangles, points split per triangle", true, checks, 2);
+  CullingScene(WithTwoSidedTriangle(fine))
+    .Compare("sphere of 79k triangles and a two-sided one", false, checks, 2);
   CullingScene(Appended(sphere, Reversed(vtkPhongTest::MakeSphere(32, 0.3))))
     .Compare("a hollow sphere (a reversed one inside)", true, checks);
 }
@@ -298,6 +370,10 @@ void CheckOtherSurfaces(Checks& checks)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   withNaN->GetPoints()->SetPoint(100, nan, nan, nan);
   CullingScene(withNaN).Compare("a point at NaN", false, checks);
+  auto unusedNaN = vtkSmartPointer<vtkPolyData>::New();
+  unusedNaN->DeepCopy(sphere);
+  unusedNaN->GetPoints()->InsertNextPoint(nan, nan, nan);
+  CullingScene(unusedNaN).Compare("a point at NaN no triangle uses", true, checks);
 }
 
 void CheckSettingsThatShowBackFaces(Checks& checks)
@@ -335,9 +411,9 @@ void CheckSettingsThatShowBackFaces(Checks& checks)
 
 // A surface of more than 256k triangles is analysed on a thread of its own: the frames drawn
 // before its answer are not culled, a later one is, and the pictures agree.
-void CheckBackgroundAnalysis(Checks& checks)
+void CheckBackgroundAnalysis(vtkPolyData* mesh, const std::string& what, Checks& checks)
 {
-  CullingScene scene(vtkPhongTest::MakeSphere(400)); // 318 400 triangles
+  CullingScene scene(mesh);
   // Whether the first frame is culled depends on how soon the thread ends (VTK may draw a
   // first frame twice); the benchmark shows the first frame's time (performance.md).
   const auto first = scene.Render(true);
@@ -349,12 +425,20 @@ void CheckBackgroundAnalysis(Checks& checks)
     scene.View.Window->Render();
     used = scene.UsedCulling();
   }
-  checks.Expect(used, "large surface: culled once the background analysis is in");
+  checks.Expect(used, what + ": culled once the background analysis is in");
   const auto culled = vtkPhongTest::Snapshot(scene.View.Window);
   const int differing = vtkPhongTest::CountDifferentPixels(first, culled, 0);
   checks.Expect(differing == 0,
-    "large surface: the culled picture is the first one (" + std::to_string(differing) +
+    what + ": the culled picture is the first one (" + std::to_string(differing) +
       " pixels differ)");
+}
+
+void CheckBackgroundAnalysis(Checks& checks)
+{
+  auto sphere = vtkPhongTest::MakeSphere(400); // 318 400 triangles
+  CheckBackgroundAnalysis(sphere, "large surface", checks);
+  CheckBackgroundAnalysis(
+    SplitPerTriangle(sphere), "large surface, points split per triangle", checks);
 }
 
 // The two halves of a sphere (the cells with their centre at x < 0, the others), each a
