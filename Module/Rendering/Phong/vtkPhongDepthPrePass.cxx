@@ -44,7 +44,7 @@ vtkPhongDepthPrePass::~vtkPhongDepthPrePass() = default; // queries die with the
 
 //------------------------------------------------------------------------------
 bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMapper* mapper,
-  double triangles, double depthTriangles, int culledLights,
+  double triangles, double depthTriangles, int culledLights, bool backFacesCulled,
   const std::function<void(bool depthOnly)>& draw)
 {
   using Mapper = vtkPhongLightingSettings;
@@ -56,7 +56,8 @@ bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMa
   {
     const int evaluatedLights =
       static_cast<int>(vtkPhongLightGeometry::SwitchedOn(ren).size()) - culledLights;
-    used = this->Decide(evaluatedLights, triangles, depthTriangles, ren->GetRenderWindow());
+    used = this->Decide(
+      evaluatedLights, triangles, depthTriangles, backFacesCulled, ren->GetRenderWindow());
   }
   if (used)
   {
@@ -66,6 +67,7 @@ bool vtkPhongDepthPrePass::Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMa
   if (counting)
   {
     this->BeginCount(Shaded);
+    this->CullingOfStartedShaded = backFacesCulled;
   }
   draw(false);
   if (counting)
@@ -162,8 +164,8 @@ bool vtkPhongDepthPrePass::CouldPay(double depthTriangles, int evaluatedLights) 
 }
 
 //------------------------------------------------------------------------------
-bool vtkPhongDepthPrePass::Decide(
-  int evaluatedLights, double triangles, double depthTriangles, vtkWindow* window)
+bool vtkPhongDepthPrePass::Decide(int evaluatedLights, double triangles, double depthTriangles,
+  bool backFacesCulled, vtkWindow* window)
 {
   if (window != this->Window)
   {
@@ -175,6 +177,13 @@ bool vtkPhongDepthPrePass::Decide(
   if (this->Started[Shaded] || this->Started[Visible])
   {
     return this->LastWithPrePass; // the last counts are not in yet: keep going as before
+  }
+  if (this->ShadedCount > 0.0 && this->ShadedCulled != backFacesCulled)
+  {
+    // The culling started or stopped since the plain count: count a plain draw again, then
+    // decide (the count with the pre-pass still holds: its lit draw shades what shows).
+    this->ShadedCount = 0.0;
+    this->Decided = false;
   }
   bool usePrePass = false;
   if (this->ShadedCount <= 0.0)
@@ -278,7 +287,15 @@ void vtkPhongDepthPrePass::CollectCounts()
   {
     if (this->Started[count])
     {
-      (count == Shaded ? this->ShadedCount : this->VisibleCount) = counts[count];
+      if (count == Shaded)
+      {
+        this->ShadedCount = counts[count];
+        this->ShadedCulled = this->CullingOfStartedShaded;
+      }
+      else
+      {
+        this->VisibleCount = counts[count];
+      }
       this->Started[count] = false;
     }
   }

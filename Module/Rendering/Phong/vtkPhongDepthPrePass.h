@@ -19,7 +19,10 @@
  * counts one of the two numbers; the other is refreshed by one frame in the other mode when
  * the one counted moves by a quarter (the view or the data changed) or after
  * ReprobeInterval frames, and the decision is taken again; it is also taken again at once
- * when the number of evaluated lights or of triangles changes.
+ * when the number of evaluated lights or of triangles changes, and after a new plain count
+ * when the culling of a closed surface's back faces starts or stops (a plain draw of a
+ * closed surface shades about half as many fragments culled: the decision taken while its
+ * analysis ran would otherwise hold until the next refresh).
  *
  * Counts arrive a frame late (the query results are read when available, never waited for).
  * Counting is skipped while another GL_SAMPLES_PASSED query is running (VTK's depth peeling).
@@ -49,10 +52,13 @@ public:
    * used. `draw(depthOnly)` is the mapper's own draw (VTK's RenderPieceDraw), with the
    * depth-only program when depthOnly; `triangles` the polygons and strips it draws,
    * `depthTriangles` those its depth pass draws (fewer where vtkPhongVisibleClusters leaves
-   * hidden ones out), `culledLights` the lights light culling leaves out of its lit program.
+   * hidden ones out), `culledLights` the lights light culling leaves out of its lit program,
+   * `backFacesCulled` whether the draw culls a closed surface's hidden faces
+   * (vtkPhongClosedSurface).
    */
   bool Draw(int mode, vtkRenderer* ren, vtkActor* act, vtkMapper* mapper, double triangles,
-    double depthTriangles, int culledLights, const std::function<void(bool depthOnly)>& draw);
+    double depthTriangles, int culledLights, bool backFacesCulled,
+    const std::function<void(bool depthOnly)>& draw);
 
   /**
    * Whether the pre-pass may draw the actor at all: opaque lit surfaces without edges or
@@ -71,10 +77,11 @@ public:
 
   /**
    * Whether the automatic mode draws this frame with the pre-pass, given the lights the lit
-   * program evaluates per fragment, the triangles drawn and those the depth pass would draw.
-   * Call with a current context, once per draw.
+   * program evaluates per fragment, the triangles drawn and those the depth pass would draw,
+   * and whether back faces are culled. Call with a current context, once per draw.
    */
-  bool Decide(int evaluatedLights, double triangles, double depthTriangles, vtkWindow* window);
+  bool Decide(int evaluatedLights, double triangles, double depthTriangles, bool backFacesCulled,
+    vtkWindow* window);
 
   /**
    * The break-even: whether the pre-pass pays for a draw whose plain version shades `shaded`
@@ -135,6 +142,8 @@ private:
   int Running = -1;                   // the count running between Begin and End
   bool LastWithPrePass = false;
   double ShadedCount = 0.0;  // from the latest plain draw
+  bool ShadedCulled = false; // whether that draw culled back faces
+  bool CullingOfStartedShaded = false;
   double VisibleCount = 0.0; // from the latest draw with the pre-pass
   bool Decided = false;
   bool DecidedPrePass = false;

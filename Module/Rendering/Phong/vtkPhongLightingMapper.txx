@@ -290,6 +290,7 @@ void vtkPhongLightingMapper<Base>::DrawSurfaces(vtkRenderer* ren, vtkActor* act,
   this->Internal->DepthPassTriangles = 0.0;
   this->Internal->UsedDepthPrePass = this->Internal->PrePass.Draw(mode, ren, act, this, triangles,
     depthTriangles, this->Internal->Core->GetNumberOfCulledLights(),
+    this->Internal->UsedClosedSurfaceCulling,
     [&](bool depthOnly)
     {
       // VTK's draw advances the primitive id offset of cell colours and normals as it goes:

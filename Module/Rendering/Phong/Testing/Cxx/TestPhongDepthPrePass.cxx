@@ -4,7 +4,8 @@
 // uses the pre-pass); with edges shown it is not used. Picking (vtkHardwareSelector) finds the same
 // cells either way. Automatic probes the pre-pass and keeps it where the lighting it saves
 // outweighs the depth pass (nested shells under 8 lights), not where nothing is hidden (a sphere),
-// and does not probe where it could not pay even with nothing visible (CGAL's bunny).
+// and does not probe where it could not pay even with nothing visible (CGAL's bunny); it
+// decides again when a sphere's back faces start being culled.
 // Occlusion culling leaves the hidden shells out of the depth pass, and a view that turns at
 // once to what it left out is still exact, also with points at NaN.
 
@@ -17,6 +18,7 @@
 #include "vtkContourFilter.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPhongCompositePolyDataMapper.h"
@@ -28,11 +30,13 @@
 
 #include "vtkPhongDepthPrePass.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <set>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace
@@ -472,6 +476,60 @@ std::vector<bool> AutomaticFrames(PrePassScene& scene, vtkPhongPolyDataMapper* m
   return used;
 }
 
+// A closed surface's back faces shade, drawn plainly, until its culling starts (a large
+// mesh's analysis runs on a thread of its own for the first frames): the pre-pass may pay
+// then and not once they are culled. The decision follows the culling at once, not at the
+// next refresh (ReprobeInterval frames later).
+// The mesh's cells from the farthest from `eye` to the nearest: drawn plainly, each hidden
+// face is shaded before the face in front of it overwrites it.
+vtkSmartPointer<vtkPolyData> FarthestFirst(vtkPolyData* mesh, const double eye[3])
+{
+  std::vector<std::pair<double, vtkIdType>> order;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType cell = 0; cell < mesh->GetNumberOfPolys(); ++cell)
+  {
+    mesh->GetCellPoints(cell, ids);
+    double centre[3] = { 0.0, 0.0, 0.0 };
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      const double* point = mesh->GetPoint(ids->GetId(k));
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        centre[axis] += point[axis] / ids->GetNumberOfIds();
+      }
+    }
+    order.emplace_back(-vtkMath::Distance2BetweenPoints(centre, eye), cell);
+  }
+  std::sort(order.begin(), order.end());
+  vtkNew<vtkCellArray> cells;
+  for (const auto& entry : order)
+  {
+    mesh->GetCellPoints(entry.second, ids);
+    cells->InsertNextCell(ids);
+  }
+  auto sorted = vtkSmartPointer<vtkPolyData>::New();
+  sorted->ShallowCopy(mesh);
+  sorted->SetPolys(cells);
+  return sorted;
+}
+
+void CheckCullingChange(
+  PrePassScene& scene, vtkPhongPolyDataMapper* ballMapper, vtkPhongTest::Checks& checks)
+{
+  ballMapper->SetInputData(FarthestFirst(
+    vtkPhongTest::MakeSphere(64, 12.0), scene.View.Renderer->GetActiveCamera()->GetPosition()));
+  ballMapper->SetClosedSurfaceCulling(false);
+  const std::vector<bool> unculled = AutomaticFrames(scene, ballMapper, 6);
+  const double complexity = ballMapper->GetDepthComplexity();
+  std::cout << "sphere, back faces drawn: " << complexity << " shaded fragments per visible one\n";
+  checks.Expect(unculled[4] && unculled[5],
+    "automatic, a sphere with its back faces drawn under 8 lights: the pre-pass pays");
+  ballMapper->SetClosedSurfaceCulling(true);
+  const std::vector<bool> culled = AutomaticFrames(scene, ballMapper, 4);
+  checks.Expect(ballMapper->GetUsedClosedSurfaceCulling() && !culled[2] && !culled[3],
+    "the same sphere culled: the pre-pass is left within 3 frames");
+}
+
 // Automatic: a plain frame counts the fragments it shades, the next one probes with the
 // pre-pass, and from then on the pre-pass stays only while the lighting it saves outweighs
 // the depth pass (vtkPhongDepthPrePass::Pays). In a 400x400 view under 8 lights the nested
@@ -499,6 +557,7 @@ void CheckAutomatic(PrePassScene& scene, vtkPhongTest::Checks& checks)
     "automatic, a sphere (nothing hidden): probed once, then left");
   checks.Expect(std::abs(ballMapper->GetDepthComplexity() - 1.0) < 0.01,
     "the sphere: one shaded fragment per visible one");
+  CheckCullingChange(scene, ballMapper, checks);
 
   // The break-even against the scenes it was measured on (1280x1024, llvmpipe; plain draw
   // shaded, visible, triangles, lights; docs/results/performance.md, "Depth complexity").
