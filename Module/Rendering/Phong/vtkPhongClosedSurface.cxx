@@ -87,9 +87,9 @@ std::uint64_t Mix(std::uint64_t x)
 // f of the two corners. With f(a, b) = h(a) Mix(h(b)), h a hash of a point (`hash`), an open
 // surface leaves its boundary loops, whose sum is not 0 but with a chance of 2^-64: false
 // means open (or inconsistent) for certain, with one pass and no memory, before the exact
-// check (IsClosedAndConsistent). Degenerate triangles cancel themselves. A corner hashed 0
-// rules the surface out; an index that names no point is left to the exact check, which
-// refuses it.
+// check (IsClosedAndConsistent). Degenerate triangles cancel themselves. A corner hashed 0,
+// or an index that names no point (the rest of the analysis reads every corner's position),
+// rules the surface out.
 template <typename Hash>
 bool EdgesMayPair(const std::vector<unsigned int>& indices, size_t points, const Hash& hash)
 {
@@ -101,7 +101,7 @@ bool EdgesMayPair(const std::vector<unsigned int>& indices, size_t points, const
     {
       if (indices[i + k] >= points)
       {
-        return true;
+        return false;
       }
       h[k] = hash(indices[i + k]);
       if (h[k] == 0)
