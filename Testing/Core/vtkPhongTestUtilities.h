@@ -13,6 +13,7 @@
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkImageMathematics.h"
@@ -117,6 +118,22 @@ inline vtkSmartPointer<vtkPolyData> Moved(vtkPolyData* mesh, double x, double y,
   move->SetTransform(transform);
   move->Update();
   return move->GetOutput();
+}
+
+// The mean of a cell's points.
+inline void CellCentre(vtkPolyData* mesh, vtkIdType cell, double centre[3])
+{
+  vtkNew<vtkIdList> ids;
+  mesh->GetCellPoints(cell, ids);
+  centre[0] = centre[1] = centre[2] = 0.0;
+  for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+  {
+    const double* point = mesh->GetPoint(ids->GetId(k));
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      centre[axis] += point[axis] / ids->GetNumberOfIds();
+    }
+  }
 }
 
 // A polygonal mesh of double-precision points from lists of points and faces (any sizes).

@@ -119,6 +119,19 @@ bool EdgesMayPair(const std::vector<unsigned int>& indices, size_t points, const
   return sum == 0;
 }
 
+// Calls `visit(from, to)` for each directed edge of each triangle.
+template <typename Visit>
+void ForEachEdge(const std::vector<unsigned int>& triangles, Visit&& visit)
+{
+  for (size_t i = 0; i + 2 < triangles.size(); i += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      visit(triangles[i + k], triangles[i + (k + 1) % 3]);
+    }
+  }
+}
+
 // Sorts [first, last): a point has a handful of edges, where insertion beats std::sort.
 void SortFew(std::uint32_t* first, std::uint32_t* last)
 {
@@ -361,22 +374,24 @@ bool vtkPhongClosedSurface::MayBeClosedByIds(
 bool vtkPhongClosedSurface::MayBeClosedAtPositions(
   const std::vector<unsigned int>& indices, vtkPolyData* input)
 {
-  vtkPoints* points = input->GetPoints();
-  std::vector<std::uint64_t> hashes(static_cast<size_t>(points->GetNumberOfPoints()));
-  for (size_t p = 0; p < hashes.size(); ++p)
-  {
-    double x[3];
-    points->GetPoint(static_cast<vtkIdType>(p), x);
-    std::uint64_t h = 0x243f6a8885a308d3ull;
-    for (double coordinate : x)
+  std::vector<std::uint64_t> hashes;
+  hashes.reserve(static_cast<size_t>(input->GetNumberOfPoints()));
+  WithPositions(input,
+    [&hashes](auto* array)
     {
-      const double zeroed = coordinate + 0.0; // -0 and +0: one position
-      std::uint64_t bits;
-      std::memcpy(&bits, &zeroed, sizeof(bits));
-      h = Mix(h ^ bits);
-    }
-    hashes[p] = !IsFinite(x) ? 0 : (h != 0 ? h : 1);
-  }
+      for (const auto x : vtk::DataArrayTupleRange<3>(array))
+      {
+        std::uint64_t h = 0x243f6a8885a308d3ull;
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          const double zeroed = static_cast<double>(x[axis]) + 0.0; // -0 and +0: one position
+          std::uint64_t bits;
+          std::memcpy(&bits, &zeroed, sizeof(bits));
+          h = Mix(h ^ bits);
+        }
+        hashes.push_back(!IsFinite(x) ? 0 : (h != 0 ? h : 1));
+      }
+    });
   return EdgesMayPair(indices, hashes.size(), [&hashes](unsigned int p) { return hashes[p]; });
 }
 
@@ -425,13 +440,8 @@ bool vtkPhongClosedSurface::IsClosedAndConsistent(const std::vector<unsigned int
     return false; // an edge's other point and direction are packed in 32 bits
   }
   std::vector<std::uint32_t> edgesAt(size_t(largest) + 1, 0); // by their lower point
-  for (size_t i = 0; i < triangles.size(); i += 3)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      ++edgesAt[std::min(triangles[i + k], triangles[i + (k + 1) % 3])];
-    }
-  }
+  ForEachEdge(
+    triangles, [&edgesAt](unsigned int from, unsigned int to) { ++edgesAt[std::min(from, to)]; });
   const size_t perRange = EdgesPerRange(triangles.size());
   for (size_t first = 0; first < edgesAt.size();)
   {
@@ -466,18 +476,15 @@ bool vtkPhongClosedSurface::ArePaired(const std::vector<unsigned int>& triangles
     start += edgesAt[p];
   }
   std::vector<std::uint32_t> others(edges);
-  for (size_t i = 0; i < triangles.size(); i += 3)
-  {
-    for (int k = 0; k < 3; ++k)
+  ForEachEdge(triangles,
+    [&](unsigned int from, unsigned int to)
     {
-      const unsigned int from = triangles[i + k], to = triangles[i + (k + 1) % 3];
       const unsigned int low = std::min(from, to);
       if (low >= first && low < last)
       {
         others[ends[low - first]++] = (std::max(from, to) << 1) | (from < to ? 0u : 1u);
       }
-    }
-  }
+    });
   std::uint32_t begin = 0;
   for (const std::uint32_t end : ends)
   {

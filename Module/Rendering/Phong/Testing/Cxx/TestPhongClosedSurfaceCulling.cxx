@@ -450,12 +450,9 @@ std::pair<vtkSmartPointer<vtkPolyData>, vtkSmartPointer<vtkPolyData>> Halves(vtk
   for (vtkIdType cell = 0; cell < mesh->GetNumberOfPolys(); ++cell)
   {
     mesh->GetCellPoints(cell, ids);
-    double centre = 0.0;
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      centre += mesh->GetPoint(ids->GetId(k))[0];
-    }
-    cells[centre < 0.0 ? 0 : 1]->InsertNextCell(ids);
+    double centre[3];
+    vtkPhongTest::CellCentre(mesh, cell, centre);
+    cells[centre[0] < 0.0 ? 0 : 1]->InsertNextCell(ids);
   }
   vtkSmartPointer<vtkPolyData> halves[2];
   for (int h = 0; h < 2; ++h)

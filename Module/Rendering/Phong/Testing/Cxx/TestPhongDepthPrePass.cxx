@@ -485,22 +485,14 @@ std::vector<bool> AutomaticFrames(PrePassScene& scene, vtkPhongPolyDataMapper* m
 vtkSmartPointer<vtkPolyData> FarthestFirst(vtkPolyData* mesh, const double eye[3])
 {
   std::vector<std::pair<double, vtkIdType>> order;
-  vtkNew<vtkIdList> ids;
   for (vtkIdType cell = 0; cell < mesh->GetNumberOfPolys(); ++cell)
   {
-    mesh->GetCellPoints(cell, ids);
-    double centre[3] = { 0.0, 0.0, 0.0 };
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      const double* point = mesh->GetPoint(ids->GetId(k));
-      for (int axis = 0; axis < 3; ++axis)
-      {
-        centre[axis] += point[axis] / ids->GetNumberOfIds();
-      }
-    }
+    double centre[3];
+    vtkPhongTest::CellCentre(mesh, cell, centre);
     order.emplace_back(-vtkMath::Distance2BetweenPoints(centre, eye), cell);
   }
   std::sort(order.begin(), order.end());
+  vtkNew<vtkIdList> ids;
   vtkNew<vtkCellArray> cells;
   for (const auto& entry : order)
   {
