@@ -2,6 +2,8 @@
 
 #include "vtkDataArray.h"
 #include "vtkNew.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
@@ -68,4 +70,30 @@ vtkSmartPointer<vtkPolyData> vtkPhongBufferBlocks::CopyOfPoints(vtkPolyData* inp
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->SetPoints(points);
   return copy;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The group lists its buffers only to subclasses: a pointer to the protected member, taken
+// where it is accessible, reads it from any group.
+struct vtkPhongBufferGroupAccess : vtkOpenGLVertexBufferObjectGroup
+{
+  static auto UsedBuffers() { return &vtkPhongBufferGroupAccess::UsedVBOs; }
+};
+}
+
+void vtkPhongBufferBlocks::ReleasePackedCopies(vtkOpenGLVertexBufferObjectGroup* buffers)
+{
+  if (!buffers)
+  {
+    return;
+  }
+  for (auto& named : buffers->*vtkPhongBufferGroupAccess::UsedBuffers())
+  {
+    if (named.second && named.second->GetPackedVBO().empty())
+    {
+      std::vector<float>().swap(named.second->GetPackedVBO());
+    }
+  }
 }

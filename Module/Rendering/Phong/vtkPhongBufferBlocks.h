@@ -17,6 +17,7 @@
 
 #include <vector> // for std::vector
 
+class vtkOpenGLVertexBufferObjectGroup;
 class vtkPolyData;
 
 /**
@@ -43,6 +44,16 @@ public:
    * another thread reads while the input may change (vtkPhongBackgroundTask).
    */
   static vtkSmartPointer<vtkPolyData> CopyOfPoints(vtkPolyData* input);
+
+  /**
+   * Frees what VTK keeps of the arrays it packed for upload. A vertex buffer object packs an
+   * array into a vector of its own when the buffer's layout differs from the array's (double
+   * points, shifted and scaled coordinates, colours, a composite mapper's blocks appended one
+   * after the other), uploads it, and empties the vector with `resize(0)`, which keeps its
+   * memory: as large as the buffer, kept for the next upload, a copy of every big mesh's
+   * points and normals that nothing reads (VTK 9.1 to 9.7). A later upload packs again.
+   */
+  static void ReleasePackedCopies(vtkOpenGLVertexBufferObjectGroup* buffers);
 };
 
 #endif

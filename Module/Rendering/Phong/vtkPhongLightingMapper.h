@@ -96,6 +96,12 @@ protected:
   virtual bool StockNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act);
   ///@}
 
+  /**
+   * VTK's, then frees the copies VTK keeps of what it packed for upload
+   * (vtkPhongBufferBlocks::ReleasePackedCopies).
+   */
+  void BuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
+
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void BuildShaders(

@@ -100,6 +100,14 @@ bool vtkPhongLightingMapper<Base>::StockNeedToRebuildShaders(
 }
 
 //------------------------------------------------------------------------------
+template <class Base>
+void vtkPhongLightingMapper<Base>::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
+{
+  this->Base::BuildBufferObjects(ren, act);
+  vtkPhongBufferBlocks::ReleasePackedCopies(this->VBOs);
+}
+
+//------------------------------------------------------------------------------
 // VTK's test first (it also refreshes this primitive's light complexity), then what only the
 // stock mapper's protected state tells, for the core's plan: the shader is rebuilt when the
 // plan's signature changed.
