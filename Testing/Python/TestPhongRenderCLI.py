@@ -247,6 +247,15 @@ checks.expect(any(p[3] > 0 and p[0] > 0.7 and p[2] > 0.7 for p in values)
               and any(p[3] > 0 and p[1] > 0.7 for p in values),
               "--debug-view normal shows normals as colours")
 
+output = path("budget.png")
+run(path("sphere.off"), "-o", output, "--size", "120x90", "--debug-view", "budget-use",
+    "--error-budget", "1", "--transparent", "--quiet")
+budget_colours = {p[:3] for p in pixels(read(output)) if p[3] > 0}
+checks.expect(len(budget_colours) == 1 and
+              all(p[0] == 0.0 and p[2] > p[1] > 0.0 for p in budget_colours),
+              "--debug-view budget-use draws the surface in one blue (per fragment): %r"
+              % sorted(budget_colours)[:4])
+
 output = path("lights.png")
 result = run(path("sphere.off"), "-o", output, "--size", "120x90", "--quiet", "--light",
              "spot:0,0,3:1,0.5,0:2", "--light", "directional:-1,1,1", "--lobe",

@@ -71,6 +71,8 @@ const char* vtkPhongLightingSettings::DebugViewAsString(int view)
       return "PositionVC";
     case NormalVC:
       return "NormalVC";
+    case BudgetUse:
+      return "BudgetUse";
     case Final:
     default:
       return "Final";
@@ -110,8 +112,7 @@ void vtkPhongLightingSettings::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightCullingBound: " << this->LightCullingBound << "\n";
   os << indent << "ErrorBudget: " << this->ErrorBudget << "\n";
   os << indent << "SpecularAntiAliasing: " << (this->SpecularAntiAliasing ? "On" : "Off") << "\n";
-  os << indent << "LightingWithoutLights: " << (this->LightingWithoutLights ? "On" : "Off")
-     << "\n";
+  os << indent << "LightingWithoutLights: " << (this->LightingWithoutLights ? "On" : "Off") << "\n";
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent
      << "DepthPrePassOcclusionCulling: " << (this->DepthPrePassOcclusionCulling ? "On" : "Off")

@@ -44,6 +44,12 @@ public:
    * material side can be told; an 8-bit window clamps them. vtkPhongReference shades such a
    * G-buffer in double precision to measure the shading arithmetic alone. Per-vertex
    * Gouraud has no per-fragment normal: NormalVC shows the interpolated one.
+   *
+   * BudgetUse shows how each primitive spends the error budget (ErrorBudget): it is planned
+   * as the final view, then drawn in one colour, blue where the light sums stay per fragment,
+   * green where the specular sums go per vertex and the diffuse term stays per fragment,
+   * orange where every sum goes per vertex; its brightness goes from 0.25 (nothing spent)
+   * to 1 (the whole budget spent, GetErrorBound() / ErrorBudget, light culling included).
    */
   enum DebugViews
   {
@@ -55,7 +61,8 @@ public:
     ShadingNormal = 5,
     SingleLight = 6,
     PositionVC = 7,
-    NormalVC = 8
+    NormalVC = 8,
+    BudgetUse = 9
   };
 
   enum DepthPrePassModes
@@ -70,7 +77,7 @@ public:
    * The debug view. Default Final; one of the DebugViews (values are clamped).
    * Each view is its own shader variant.
    */
-  vtkSetClampMacro(DebugView, int, Final, NormalVC);
+  vtkSetClampMacro(DebugView, int, Final, BudgetUse);
   vtkGetMacro(DebugView, int);
   const char* GetDebugViewAsString();
   static const char* DebugViewAsString(int view);
@@ -343,7 +350,8 @@ private:
     ShadingNormal = vtkPhongLightingSettings::ShadingNormal,                                       \
     SingleLight = vtkPhongLightingSettings::SingleLight,                                           \
     PositionVC = vtkPhongLightingSettings::PositionVC,                                             \
-    NormalVC = vtkPhongLightingSettings::NormalVC                                                  \
+    NormalVC = vtkPhongLightingSettings::NormalVC,                                                 \
+    BudgetUse = vtkPhongLightingSettings::BudgetUse                                                \
   };                                                                                               \
   enum DepthPrePassModes                                                                           \
   {                                                                                                \
@@ -401,6 +409,10 @@ private:
   void SetDebugViewToNormalVC()                                                                    \
   {                                                                                                \
     this->SetDebugView(NormalVC);                                                                  \
+  }                                                                                                \
+  void SetDebugViewToBudgetUse()                                                                   \
+  {                                                                                                \
+    this->SetDebugView(BudgetUse);                                                                 \
   }                                                                                                \
   void SetDebugLightIndex(int index)                                                               \
   {                                                                                                \

@@ -27,6 +27,24 @@ void vtkPhongMaterialUniforms::Upload()
   // lighting the contract uses the front material on both faces.
   this->UploadSide(
     this->ThePlan.BackMaterial, "BF", this->ThePlan.BackMaterial != this->ThePlan.FrontMaterial);
+  if (this->ThePlan.Has(vtkPhongFeature::DebugBudget))
+  {
+    this->Side.clear(); // one colour for both sides
+    this->Set("phongBudgetUse", BudgetUseColor(this->ThePlan));
+  }
+}
+
+//------------------------------------------------------------------------------
+// The BudgetUse view's colour (vtkPhongLightingSettings::DebugViews): the mode's hue, its
+// brightness from 0.25 (nothing of the budget spent) to 1 (all of it).
+vtkPhongMaterialUniforms::RGB vtkPhongMaterialUniforms::BudgetUseColor(const Plan& plan)
+{
+  static const RGB hues[3] = { { { 0.0f, 0.4f, 1.0f } }, { { 0.0f, 1.0f, 0.3f } },
+    { { 1.0f, 0.4f, 0.0f } } };
+  const RGB& hue = hues[std::min(std::max(plan.BudgetMode, 0), 2)];
+  const double share = std::min(std::max(plan.BudgetShare, 0.0), 1.0);
+  const auto brightness = static_cast<float>(0.25 + 0.75 * share);
+  return { { brightness * hue[0], brightness * hue[1], brightness * hue[2] } };
 }
 
 //------------------------------------------------------------------------------

@@ -39,6 +39,7 @@ private:
 
   void UploadSide(vtkProperty* material, const char* suffix, bool report);
   RGB CheckedColor(const double* color, double scale, const char* which);
+  static RGB BudgetUseColor(const Plan& plan);
   float CheckedCoefficient(double value, const char* which);
   void UploadProducts();
   void Set(const char* name, const RGB& value);

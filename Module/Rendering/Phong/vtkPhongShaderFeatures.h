@@ -30,6 +30,7 @@ enum class vtkPhongFeature : unsigned char
   Ambient,
   Attenuation,
   BackMaterial,
+  DebugBudget, ///< the BudgetUse view: one colour per primitive, its mode and budget share
   DebugNormal,
   DebugNormalVC,
   DebugPositionVC,

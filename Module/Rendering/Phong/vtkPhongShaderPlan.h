@@ -97,6 +97,11 @@ struct vtkPhongShaderPlan
   int ShadowFactorCount = 0;           ///< vtkShadowMapPass's factors (one per light)
   int CulledLights = 0;                ///< positional lights left out (vtkPhongLightCulling)
   double ErrorBound = 0.0; ///< under an error budget, the most its approximations may stray
+  /// where the error budget put the light sums: 0 per fragment, 1 the specular sums per
+  /// vertex, 2 every sum per vertex (vtkPhongGouraudBound::Mode), and the share of the budget
+  /// ErrorBound is (0 without a budget): what the BudgetUse view shows
+  int BudgetMode = 0;
+  double BudgetShare = 0.0;
   bool Has(vtkPhongFeature feature) const { return this->Features.Has(feature); }
 };
 

@@ -96,6 +96,12 @@ bool Any(const std::vector<vtkLight*>& lights, bool (*test)(vtkLight*))
   return std::any_of(lights.begin(), lights.end(), test);
 }
 
+// The views that light as the final picture does (BudgetUse then replaces the colour).
+bool IsLitLikeFinal(int view)
+{
+  return view == View::Final || view == View::BudgetUse;
+}
+
 // The debug views that show geometry rather than light.
 bool IsGeometryView(int view)
 {
@@ -152,7 +158,7 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   SortLightsByKind(switchedOn, plan);
   this->PickDebugLight(switchedOn, options, plan);
 
-  if (options.DebugView == View::Final)
+  if (IsLitLikeFinal(options.DebugView))
   {
     // Under an error budget, culling takes at most half of it.
     const double cullingBound = options.ErrorBudget > 0.0
@@ -170,11 +176,14 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   Terms terms = ChooseTerms(plan, !switchedOn.empty(), allFeatures);
   // VTK draws a surface's edges by mixing the edge colour into ambientColor (and diffuseColor
   // to black): the ambient term must be there to show it, whatever the material's Ambient.
-  terms.Ambient = terms.Ambient || (state.DrawingEdges && plan.DebugView == View::Final);
+  terms.Ambient = terms.Ambient || (state.DrawingEdges && IsLitLikeFinal(plan.DebugView));
   SetTermFeatures(terms, plan);
   SetLightFeatures(terms, allFeatures, plan);
   SetMaterialFeatures(terms, allFeatures, plan);
   const auto budgetMode = BudgetChoosesMode(ren, actor, terms, state, options, plan);
+  plan.BudgetMode = static_cast<int>(budgetMode);
+  plan.BudgetShare = options.ErrorBudget > 0.0 ? plan.ErrorBound / options.ErrorBudget : 0.0;
+  plan.Features.Set(Feature::DebugBudget, plan.DebugView == View::BudgetUse);
   const bool perVertex =
     SetInterpolationFeatures(terms, state, geometryView, budgetMode, ren, plan);
   plan.Features.Set(
@@ -272,7 +281,7 @@ vtkPhongShaderPlanner::Terms vtkPhongShaderPlanner::ChooseTerms(
   const Plan& plan, bool haveLights, bool allFeatures)
 {
   const int view = plan.DebugView;
-  const bool finalView = view == View::Final;
+  const bool finalView = IsLitLikeFinal(view);
   const bool singleLight = view == View::SingleLight;
   vtkProperty* front = plan.FrontMaterial;
   vtkProperty* back = plan.BackMaterial;
@@ -397,7 +406,7 @@ void vtkPhongShaderPlanner::SetMaterialFeatures(const Terms& terms, bool allFeat
 // only on a smooth surface (point normals that are VTK's, any interpolation but flat) under
 // directional lights only, without vtkShadowMapPass (per-vertex sums cannot read its
 // factors) or specular anti-aliasing (the budget is defined against the unfiltered model),
-// in the final view, with what light culling left of the budget.
+// in the final view (or the BudgetUse view of it), with what light culling left of the budget.
 vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer* ren,
   vtkActor* actor, const Terms& terms, const PrimitiveState& state, const Options& options,
   Plan& plan)
@@ -407,7 +416,7 @@ vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer*
   const bool smooth = state.ShadesWithPointNormals() && !state.NormalsMayBeInvalid &&
     plan.FrontMaterial->GetInterpolation() != VTK_FLAT;
   const bool shadowed = DrawnUnderShadowMaps(actor);
-  if (!triangles || !(options.ErrorBudget > 0.0) || options.DebugView != View::Final ||
+  if (!triangles || !(options.ErrorBudget > 0.0) || !IsLitLikeFinal(options.DebugView) ||
     !terms.LightSums || terms.PositionalAmbient || !smooth || shadowed || !options.Specialize ||
     options.SpecularAntiAliasing)
   {

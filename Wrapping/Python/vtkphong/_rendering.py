@@ -199,7 +199,8 @@ def _mapper_for(part, settings, progress):
              "specular": vtkPhongPolyDataMapper.SpecularTerm,
              "emission": vtkPhongPolyDataMapper.EmissionTerm,
              "normal": vtkPhongPolyDataMapper.ShadingNormal,
-             "single-light": vtkPhongPolyDataMapper.SingleLight}
+             "single-light": vtkPhongPolyDataMapper.SingleLight,
+             "budget-use": vtkPhongPolyDataMapper.BudgetUse}
     mapper = vtkPhongPolyDataMapper()
     mapper.SetInputData(part.polydata)
     colors = _has_colors(part.polydata) and settings["material"]["color"] is None

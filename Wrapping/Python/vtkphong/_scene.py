@@ -14,7 +14,7 @@ from vtkphong._errors import UsageError
 LOBES = ("phong", "blinn-phong", "normalized-phong", "normalized-blinn-phong")
 INTERPOLATIONS = ("flat", "gouraud", "per-vertex-gouraud", "phong")
 DEBUG_VIEWS = ("final", "ambient", "diffuse", "specular", "emission", "normal",
-               "single-light")
+               "single-light", "budget-use")
 WEIGHTINGS = ("uniform", "area", "angle", "max")
 LIGHT_TYPES = ("directional", "point", "spot")
 LIGHT_KINDS = ("scene", "camera", "headlight")

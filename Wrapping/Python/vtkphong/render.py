@@ -220,7 +220,8 @@ def _add_light_and_camera_options(parser):
 
 def _add_debug_and_normals_options(parser):
     parser.add_argument("--debug-view", choices=DEBUG_VIEWS,
-                        help="show one term, the normal, or one light (default final)")
+                        help="show one term, the normal, one light, or how the error budget is spent "
+                             "(default final)")
     parser.add_argument("--debug-light", type=int, metavar="I",
                         help="the light shown by --debug-view single-light (default 0)")
     parser.add_argument("--error-budget", type=_unit_range("--error-budget", 0, 255),

@@ -62,6 +62,9 @@ uniform vec3 phongMaterialDiffuse; // kd*Cd
 uniform vec3 phongMaterialSpecular; // ks*Cs, times the normalized lobe's factor
 //PHONG_ENDIF
 //PHONG_ENDIF
+//PHONG_IF DEBUG_BUDGET
+uniform vec3 phongBudgetUse; // the BudgetUse view's colour (vtkPhongMaterialUniforms)
+//PHONG_ENDIF
 //PHONG_IF EMISSION
 uniform vec3 phongEmission;
 //PHONG_IF BACK_MATERIAL
@@ -274,6 +277,9 @@ in vec3 phongSpecularLightBFVSOutput;
 //PHONG_IF !MATERIAL_UNIFORMS
   gl_FragData[0].rgb += specularColor * phongSums.specular;
 //PHONG_ENDIF
+//PHONG_ENDIF
+//PHONG_IF DEBUG_BUDGET
+  gl_FragData[0] = vec4(phongBudgetUse, 1.0);
 //PHONG_ENDIF
 //PHONG_IF DEBUG_NORMAL
   gl_FragData[0] = vec4(0.5 * phongNormalVC + 0.5, 1.0);

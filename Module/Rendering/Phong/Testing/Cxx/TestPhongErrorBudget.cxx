@@ -198,6 +198,48 @@ Outcome Measure(vtkPhongTest::Scene& view, vtkActor* actor, double budget)
   return outcome;
 }
 
+// The BudgetUse view draws every pixel of the surface in one colour: the chosen mode's hue
+// (blue per fragment, green the specular sums per vertex, orange every sum per vertex) at a
+// brightness from 0.25 (nothing of the budget spent) to 1 (all of it). Checked on each
+// case's frame, in a float target: every covered pixel the colour its mode and bound give.
+bool ShowsBudgetUse(vtkPhongTest::Scene& view, const Case& c, const Outcome& outcome)
+{
+  const double hues[3][3] = { { 0.0, 0.4, 1.0 }, { 0.0, 1.0, 0.3 }, { 1.0, 0.4, 0.0 } };
+  const double share = c.Budget > 0.0 ? std::min(outcome.Bound / c.Budget, 1.0) : 0.0;
+  double expected[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    expected[k] = (0.25 + 0.75 * share) * hues[outcome.Chosen][k];
+  }
+  vtkNew<vtkPhongFloatRenderPass> pass;
+  vtkPhongTest::SetDebugView(view, vtkPhongPolyDataMapper::BudgetUse);
+  vtkSmartPointer<vtkImageData> picture = vtkPhongTest::RenderFloat(view, pass);
+  vtkPhongTest::SetDebugView(view, vtkPhongPolyDataMapper::Final);
+  vtkDataArray* colours = picture->GetPointData()->GetScalars();
+  vtkIdType covered = 0, wrong = 0;
+  for (vtkIdType p = 0; p < colours->GetNumberOfTuples(); ++p)
+  {
+    const double* pixel = colours->GetTuple(p);
+    if (pixel[0] == 0.0 && pixel[1] == 0.0 && pixel[2] == 0.0)
+    {
+      continue; // the background
+    }
+    ++covered;
+    for (int k = 0; k < 3; ++k)
+    {
+      wrong += std::abs(pixel[k] - expected[k]) > 1e-4 ? 1 : 0;
+    }
+  }
+  if (covered == 0 || wrong > 0)
+  {
+    std::cerr << c.Name << ": the BudgetUse view shows " << wrong << " channels of " << covered
+              << " pixels away from (" << expected[0] << ", " << expected[1] << ", " << expected[2]
+              << ")\n";
+    return false;
+  }
+  return true;
+}
+
 bool RunCase(const Case& c, vtkPolyData* file)
 {
   vtkPhongTest::Scene view(c.WindowSize, c.WindowSize);
@@ -247,7 +289,7 @@ bool RunCase(const Case& c, vtkPolyData* file)
               << allowed << "\n";
     ok = false;
   }
-  return ok;
+  return ShowsBudgetUse(view, c, outcome) && ok;
 }
 
 // A camera on a sphere around the origin looking at it.

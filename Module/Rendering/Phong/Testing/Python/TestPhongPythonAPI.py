@@ -49,7 +49,7 @@ checks.expect(material.GetShininess() == 0.0 and len(messages) == 2, "negative s
 mapper = vtkphong.vtkPhongPolyDataMapper()
 checks.expect(mapper.GetDebugView() == vtkphong.vtkPhongPolyDataMapper.Final, "default view")
 for view in ("AmbientTerm", "DiffuseTerm", "SpecularTerm", "EmissionTerm", "ShadingNormal",
-             "SingleLight", "PositionVC", "NormalVC", "Final"):
+             "SingleLight", "PositionVC", "NormalVC", "BudgetUse", "Final"):
     getattr(mapper, "SetDebugViewTo" + view)()
     checks.expect(mapper.GetDebugViewAsString() == view, "debug view " + view)
 mapper.SetDebugLightIndex(3)

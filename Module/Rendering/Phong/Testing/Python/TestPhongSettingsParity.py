@@ -74,9 +74,9 @@ for kind, (cls, _) in mappers.items():
         checks.expect(mapper.GetMTime() > before, "%s: Set%s modifies the mapper" % (kind, name))
     mapper.SetDebugView(99)
     mapper.SetMaximumNumberOfShaderPrograms(10 ** 6)
-    checks.expect(mapper.GetDebugView() == vtkphong.vtkPhongLightingSettings.NormalVC and
+    checks.expect(mapper.GetDebugView() == vtkphong.vtkPhongLightingSettings.BudgetUse and
                   mapper.GetMaximumNumberOfShaderPrograms() == 4096, kind + ": clamped alike")
-    checks.expect(cls.SingleLight == Settings.SingleLight and
+    checks.expect(cls.SingleLight == Settings.SingleLight and cls.BudgetUse == Settings.BudgetUse and
                   cls.DepthPrePassAutomatic == Settings.DepthPrePassAutomatic,
                   kind + ": the enumerations are the settings object's")
 
