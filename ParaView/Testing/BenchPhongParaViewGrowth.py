@@ -3,7 +3,7 @@ on one big dataset without normals (ParaView's Sphere source, 16M triangles by d
 pvbatch process per measurement, serially and under MPI (issue 29):
 
     python3 BenchPhongParaViewGrowth.py --plugin PhongLighting.so [--ranks 1,2] \\
-        [--resolution 2829] [--frames 3]
+        [--resolution 2829] [--frames 3] [--set PROPERTY=VALUE ...]
 
 runs, for each number of ranks and each representation, `mpiexec -np N pvbatch --symmetric
 BenchPhongParaViewGrowth.py --measure ...` and prints one table (stock "Surface" beside
@@ -11,7 +11,9 @@ BenchPhongParaViewGrowth.py --measure ...` and prints one table (stock "Surface"
 (UpdatePipeline), notes each rank's resident memory, then times the first frame (Show and
 Render: the geometry filter, vtkPhong's normals and analyses, the upload, IceT), then the
 median of --frames still frames with the camera turned a degree each; each rank's peak
-resident memory above what it held once the data was made closes its line.
+resident memory above what it held once the data was made closes its line. --set gives a
+property of Phong Surface's (an integer or a number), to see what a part costs, e.g.
+--set CullHiddenBackFaces=0.
 """
 
 import argparse
@@ -49,6 +51,10 @@ def measure(args):
     display = Show(bare, view)
     display.SetRepresentationType(args.measure)
     display.Specular = 0.4
+    if args.measure == "Phong Surface":
+        for setting in args.set:
+            name, value = setting.split("=", 1)
+            setattr(display, name, float(value) if "." in value else int(value))
     view.ResetCamera()
     Render(view)
     first = time.perf_counter() - start
@@ -71,6 +77,7 @@ def run_one(args, ranks, representation):
                "pvbatch", "--symmetric", "--disable-xdisplay-test", os.path.abspath(__file__),
                "--plugin", args.plugin, "--resolution", str(args.resolution),
                "--frames", str(args.frames), "--measure", representation]
+    command += [item for setting in args.set for item in ("--set", setting)]
     output = subprocess.run(command, capture_output=True, text=True, timeout=1800).stdout
     results = [dict(re.findall(r"(\w+)=(\S+)", line)) for line in output.splitlines()
                if line.startswith("RESULT")]
@@ -88,6 +95,8 @@ def main():
     parser.add_argument("--resolution", type=int, default=2829,
                         help="the Sphere's theta and phi resolution: 2829 makes 16.0M triangles")
     parser.add_argument("--frames", type=int, default=3)
+    parser.add_argument("--set", action="append", default=[], metavar="PROPERTY=VALUE",
+                        help="a property of Phong Surface's (repeatable)")
     parser.add_argument("--measure", choices=REPRESENTATIONS,
                         help="(internal) measure this representation in this pvbatch")
     args = parser.parse_args()
