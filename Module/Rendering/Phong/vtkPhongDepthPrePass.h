@@ -141,10 +141,10 @@ private:
   bool Started[2] = { false, false }; // a count was started and not read yet
   int Running = -1;                   // the count running between Begin and End
   bool LastWithPrePass = false;
-  double ShadedCount = 0.0;  // from the latest plain draw
-  bool ShadedCulled = false; // whether that draw culled back faces
-  bool CullingOfStartedShaded = false;
-  double VisibleCount = 0.0; // from the latest draw with the pre-pass
+  double ShadedCount = 0.0;            // from the latest plain draw
+  bool ShadedCulled = false;           // whether that draw culled back faces
+  bool CullingOfStartedShaded = false; // the same for the plain count still in flight
+  double VisibleCount = 0.0;           // from the latest draw with the pre-pass
   bool Decided = false;
   bool DecidedPrePass = false;
   bool Refreshing = false; // this frame runs in the other mode to refresh its count

@@ -476,10 +476,6 @@ std::vector<bool> AutomaticFrames(PrePassScene& scene, vtkPhongPolyDataMapper* m
   return used;
 }
 
-// A closed surface's back faces shade, drawn plainly, until its culling starts (a large
-// mesh's analysis runs on a thread of its own for the first frames): the pre-pass may pay
-// then and not once they are culled. The decision follows the culling at once, not at the
-// next refresh (ReprobeInterval frames later).
 // The mesh's cells from the farthest from `eye` to the nearest: drawn plainly, each hidden
 // face is shaded before the face in front of it overwrites it.
 vtkSmartPointer<vtkPolyData> FarthestFirst(vtkPolyData* mesh, const double eye[3])
@@ -505,6 +501,10 @@ vtkSmartPointer<vtkPolyData> FarthestFirst(vtkPolyData* mesh, const double eye[3
   return sorted;
 }
 
+// A closed surface's back faces shade, drawn plainly, until its culling starts (a large
+// mesh's analysis runs on a thread of its own for the first frames): the pre-pass may pay
+// then and not once they are culled. The decision follows the culling at once, not at the
+// next refresh (ReprobeInterval frames later).
 void CheckCullingChange(
   PrePassScene& scene, vtkPhongPolyDataMapper* ballMapper, vtkPhongTest::Checks& checks)
 {
