@@ -19,7 +19,7 @@ PassArrays, then RedistributeDataSet, as users build it. Under MPI the source ma
 per rank, each with its own copies of the points on its cuts (and of the poles), some of them
 a float step apart (the source sums the angles differently for each piece): after the
 redistribution a rank holds copies from several source pieces. Checks 1, 2 and 4 only (the
-volume of check 3 would be each rank's own hull).
+volume of check 3 would be each rank's own hull) and 5.
 Checks, each failing with "ERROR:":
 
 1. smooth: drawn diffusely by "Phong Surface", it is close to the same sphere drawn with
@@ -37,6 +37,10 @@ Checks, each failing with "ERROR:":
    normals must see the faces of its neighbours (ghost cells); --no-ghosts turns the
    representation's NormalsAcrossPieces off, to show that this check sees the seam that
    follows.
+5. no seam on the polydata drawn without the redistribution (the source's own pieces, or
+   the file's one piece on the first rank and nothing on the others): the same lit picture
+   as the serial baseline. Polydata pieces get their neighbours' faces from
+   vtkPhongSeamFacesExchange rather than vtkGhostCellsGenerator.
 """
 
 import argparse
@@ -228,6 +232,15 @@ def main():
     else:
         check_seam("surface", lit, read_png(args.baseline), ranks)
     Hide(pieces, view)
+    # 5: the polydata as it comes, not redistributed (no unstructured grid): the ghost faces
+    # of its pieces come from the seam faces' exchange, not the ghost-cell generator. The
+    # file's one piece leaves every rank but the first empty.
+    polydata = show(bare, view, "Phong Surface", specular=0.6, across=across)
+    if not args.write_baseline:
+        check_seam("pieces", shot(view, args.out, "pieces-%dranks" % ranks),
+                   read_png(args.baseline), ranks)
+    Hide(bare, view)
+    del polydata
     if args.from_source:
         # Delaunay3D of a source's pieces is each rank's own hull: not the sphere's volume.
         report()

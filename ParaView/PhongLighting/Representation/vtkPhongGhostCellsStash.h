@@ -13,8 +13,9 @@
  *   data) are renamed StashedGhostArrayName(), so the geometry filter extracts the surface
  *   of the piece and its ghost cells together and passes the renamed flags along as an
  *   ordinary cell array;
- * - Stash off (after the normals): the flags get their name back and the ghost cells are
- *   removed from polydata, so the view draws each cell once.
+ * - Stash off (after the normals): the ghost cells are removed from polydata (their points
+ *   stay, unused), so the view draws each cell once, and the flags with them; other data
+ *   gets its flags back under their name.
  *
  * Data without ghost cells passes through unchanged (shallow copies). Composite data is
  * handled leaf by leaf by the composite pipeline; other data objects pass through.

@@ -15,6 +15,8 @@
 #include "vtkPhongGhostCellsStash.h"
 #include "vtkPhongLightingSettings.h"
 #include "vtkPhongProperty.h"
+#include "vtkPhongSeamFacesExchange.h"
+#include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 vtkStandardNewMacro(vtkPhongSurfaceRepresentation);
@@ -102,7 +104,12 @@ vtkAlgorithmOutput* vtkPhongSurfaceRepresentation::GetInternalOutputPort(int por
   {
     return internal;
   }
-  if (vtkPhongSurfaceRepresentation::IsParallel())
+  if (vtkPhongSurfaceRepresentation::ExchangesSeamFaces(data))
+  {
+    this->SeamFaces->SetInputConnection(internal);
+    this->GhostStash->SetInputConnection(this->SeamFaces->GetOutputPort());
+  }
+  else if (vtkPhongSurfaceRepresentation::IsParallel())
   {
     this->GhostCells->SetInputConnection(internal);
     this->GhostStash->SetInputConnection(this->GhostCells->GetOutputPort());
@@ -122,6 +129,12 @@ bool vtkPhongSurfaceRepresentation::IsParallel()
 }
 
 //------------------------------------------------------------------------------
+bool vtkPhongSurfaceRepresentation::ExchangesSeamFaces(vtkDataObject* input)
+{
+  return vtkPolyData::SafeDownCast(input) && vtkPhongSurfaceRepresentation::IsParallel();
+}
+
+//------------------------------------------------------------------------------
 int vtkPhongSurfaceRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -129,13 +142,17 @@ int vtkPhongSurfaceRepresentation::RequestData(
     this->StashesGhostCells() && vtkPhongSurfaceRepresentation::IsParallel();
   if (acrossPieces)
   {
-    // Collective: every rank must run it on every update, as ParaView does with its
+    // Collective: every rank must run them on every update, as ParaView does with its
     // geometry filter, whether or not its own piece changed.
     this->GhostCells->Modified();
+    this->SeamFaces->Modified();
   }
   // A piece's points on a cut, and the ghost cells' points, come as copies (a source's own
-  // pieces compute them by different sums): the normals join them.
-  this->Normals->SetJoinCoincidentPoints(acrossPieces);
+  // pieces compute them by different sums): the normals join them. The seam faces'
+  // exchange already puts its faces on the piece's own copies, and a piece's points are
+  // not joined serially either: no join there (it would cost a copy of the piece).
+  this->Normals->SetJoinCoincidentPoints(acrossPieces &&
+    !vtkPhongSurfaceRepresentation::ExchangesSeamFaces(vtkDataObject::GetData(inputVector[0], 0)));
   const auto wholeExtent = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
   if (this->StashesGhostCells() && inputVector[0]->GetNumberOfInformationObjects() == 1 &&
     inputVector[0]->GetInformationObject(0)->Has(wholeExtent))
@@ -319,6 +336,8 @@ void vtkPhongSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   this->LightingSettings->PrintSelf(os, indent.GetNextIndent());
   os << indent << "GhostCells:\n";
   this->GhostCells->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "SeamFaces:\n";
+  this->SeamFaces->PrintSelf(os, indent.GetNextIndent());
   os << indent << "GhostStash:\n";
   this->GhostStash->PrintSelf(os, indent.GetNextIndent());
   os << indent << "GhostTrim:\n";

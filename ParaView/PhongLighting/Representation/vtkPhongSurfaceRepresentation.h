@@ -14,13 +14,16 @@
  * splitting on) between ParaView's geometry filter and the view, so every rank computes the
  * normals of its own piece; ComputeNormals off draws the normals the surface carries.
  * Under MPI the pieces' normals agree where pieces meet (NormalsAcrossPieces, default on):
- * the representation makes one level of ghost cells (vtkGhostCellsGenerator: ParaView's
- * sources and filters, RedistributeDataSet included, mostly ignore ghost requests) and keeps
- * them through the geometry filter (vtkPhongGhostCellsStash) until the normals are made, then
- * drops them. Pieces hold copies of the points on their cuts, which the ghost cells bring
- * along; a source's own pieces (ParaView's Sphere under MPI) compute them by different sums,
- * a few float steps apart. The normals treat the copies of a point (by global point id
- * where the data has them, else by position, within a millionth of the diagonal) as one
+ * the representation gives each piece ghost cells and keeps them through the geometry filter
+ * (vtkPhongGhostCellsStash) until the normals are made, then drops them. Polydata pieces get
+ * only the faces around the points where pieces meet (vtkPhongSeamFacesExchange); other data
+ * one level of ghost cells (vtkGhostCellsGenerator: ParaView's sources and filters,
+ * RedistributeDataSet included, mostly ignore ghost requests), which costs far more. Pieces
+ * hold copies of the points on their cuts; a source's own pieces (ParaView's Sphere under
+ * MPI) compute them by different sums, a few float steps apart. The seam faces' exchange
+ * puts the faces it brings on the piece's own copies (by position, within a millionth of the
+ * diagonal). The ghost cells bring copies along, and on that path the normals treat the
+ * copies of a point (by global point id where the data has them, else by position) as one
  * vertex: vtkOpenMeshNormals' JoinCoincidentPoints.
  *
  * @sa vtkPhongCompositePolyDataMapper vtkPhongProperty vtkOpenMeshNormals
@@ -39,6 +42,7 @@ class vtkGhostCellsGenerator;
 class vtkOpenMeshNormals;
 class vtkPhongLightingSettings;
 class vtkPhongGhostCellsStash;
+class vtkPhongSeamFacesExchange;
 
 class VTKPHONGREPRESENTATIONS_EXPORT vtkPhongSurfaceRepresentation
   : public vtkGeometryRepresentationWithFaces
@@ -159,10 +163,18 @@ protected:
   void SetupDefaults() override;
 
   /**
-   * Whether this process is one of several MPI ranks: then ghost cells are made here
-   * (vtkGhostCellsGenerator; the input's own, when it has some, are made again).
+   * Whether this process is one of several MPI ranks: then ghost faces are made here
+   * (ExchangesSeamFaces says how; the input's own ghost cells, when it has some, are made
+   * again).
    */
   static bool IsParallel();
+
+  /**
+   * Whether the input's ghost faces come from vtkPhongSeamFacesExchange (polydata under
+   * MPI) rather than from vtkGhostCellsGenerator. The same on every rank: it depends on the
+   * number of ranks and the input's type.
+   */
+  static bool ExchangesSeamFaces(vtkDataObject* input);
 
   /**
    * The superclass' RequestData. It forwards the input's whole extent to the internal
@@ -193,6 +205,7 @@ protected:
   bool NormalsAcrossPieces = true;
   std::string NormalArray;
   vtkNew<vtkGhostCellsGenerator> GhostCells;
+  vtkNew<vtkPhongSeamFacesExchange> SeamFaces;
   vtkNew<vtkPhongGhostCellsStash> GhostStash;
   vtkNew<vtkPhongGhostCellsStash> GhostTrim;
   vtkNew<vtkOpenMeshNormals> Normals;
