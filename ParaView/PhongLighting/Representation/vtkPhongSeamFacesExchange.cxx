@@ -5,11 +5,13 @@
 #include "vtkCellData.h"
 #include "vtkCommunicator.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPhongGhostCellsStash.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -29,10 +31,17 @@ vtkStandardNewMacro(vtkPhongSeamFacesExchange);
 namespace
 {
 constexpr int RingTag = 872341;
-// The ring's points that are the sender's copies of points on the cut (the rest are the
-// far corners of its faces, which may lie closer to a cut point than the tolerance where
-// triangles are small: near a sphere's poles).
+// What each point of a ring is to its sender: an interior point, a boundary point, or a
+// cut point shared with the receiver. Only boundary points are matched by position: the
+// others may lie closer to one than the tolerance where triangles are small (near a
+// sphere's poles), and cuts are lines, whose points lie far apart.
 constexpr const char* SeamPointArrayName = "vtkPhongSeamPoint";
+enum RingPoint : unsigned char
+{
+  Interior = 0,
+  Boundary = 1,
+  Cut = 2
+};
 
 using Rings = std::vector<vtkSmartPointer<vtkPolyData>>;
 
@@ -46,15 +55,19 @@ uint64_t Mix(uint64_t x)
 }
 
 // Calls face(cellId, size, ids) for each polygon and each triangle of each strip (in the
-// strip's winding), with the cell id the polydata gives it; faces naming a point outside
-// the piece are skipped (the normals filter collapses them).
+// strip's winding), with the cell id the polydata gives it; ghost cells (flagged in ghost,
+// unless it is empty) and faces naming a point outside the piece (the normals filter
+// collapses them) are skipped.
 template <typename Face>
-void ForEachFace(vtkPolyData* piece, Face&& face)
+void ForEachFace(vtkPolyData* piece, const std::vector<char>& ghost, Face&& face)
 {
   const vtkIdType points = piece->GetNumberOfPoints();
-  auto inPiece = [points](vtkIdType size, const vtkIdType* ids)
-  { return std::all_of(ids, ids + size, [points](vtkIdType p) { return p >= 0 && p < points; }); };
   vtkIdType cellId = piece->GetNumberOfVerts() + piece->GetNumberOfLines();
+  auto inPiece = [&](vtkIdType size, const vtkIdType* ids)
+  {
+    return (ghost.empty() || !ghost[cellId]) &&
+      std::all_of(ids, ids + size, [points](vtkIdType p) { return p >= 0 && p < points; });
+  };
   vtkIdType size;
   const vtkIdType* ids;
   auto polys = vtk::TakeSmartPointer(piece->GetPolys()->NewIterator());
@@ -84,12 +97,12 @@ void ForEachFace(vtkPolyData* piece, Face&& face)
 
 // The points on an open fan of faces: around an interior point every neighbour is named by
 // two of its faces, and the XOR of the neighbours' hashes is 0.
-std::vector<vtkIdType> BoundaryPoints(vtkPolyData* piece)
+std::vector<vtkIdType> BoundaryPoints(vtkPolyData* piece, const std::vector<char>& ghost)
 {
   const vtkIdType n = piece->GetNumberOfPoints();
   std::vector<uint64_t> neighbours(static_cast<size_t>(n), 0);
   std::vector<char> used(static_cast<size_t>(n), 0);
-  ForEachFace(piece,
+  ForEachFace(piece, ghost,
     [&](vtkIdType, vtkIdType size, const vtkIdType* ids)
     {
       for (vtkIdType k = 0; k < size; ++k)
@@ -180,31 +193,26 @@ Boundaries GatherBoundaries(
   return all;
 }
 
-// This piece's boundary points, found by position within the tolerance.
+// Points found by position within the tolerance: each piece's boundary points, and the
+// seam mesh's received copies of other ranks' boundary points.
 class PointGrid
 {
 public:
-  PointGrid(const Frame& frame, vtkPolyData* piece, const std::vector<vtkIdType>& points)
+  explicit PointGrid(const Frame& frame)
     : Grid(frame)
   {
-    this->Entries.reserve(points.size());
-    for (vtkIdType id : points)
-    {
-      Entry entry;
-      entry.Id = id;
-      piece->GetPoint(id, entry.Position);
-      long long cell[3];
-      if (this->CellOf(entry.Position, cell))
-      {
-        entry.Key = Key(cell);
-        this->Entries.push_back(entry);
-      }
-    }
-    std::sort(this->Entries.begin(), this->Entries.end(),
-      [](const Entry& a, const Entry& b) { return a.Key < b.Key; });
   }
 
-  // The nearest point within the tolerance of x, or -1.
+  void Insert(vtkIdType id, const double x[3])
+  {
+    long long cell[3];
+    if (this->CellOf(x, cell))
+    {
+      this->Entries.emplace(Key(cell), Entry{ id, { x[0], x[1], x[2] } });
+    }
+  }
+
+  // The nearest point within the tolerance of x (the smallest id of the nearest), or -1.
   vtkIdType Find(const double x[3]) const
   {
     long long cell[3];
@@ -218,17 +226,14 @@ public:
     {
       const long long around[3] = { cell[0] + neighbour % 3 - 1, cell[1] + neighbour / 3 % 3 - 1,
         cell[2] + neighbour / 9 - 1 };
-      Entry probe;
-      probe.Key = Key(around);
-      auto range = std::equal_range(this->Entries.begin(), this->Entries.end(), probe,
-        [](const Entry& a, const Entry& b) { return a.Key < b.Key; });
+      const auto range = this->Entries.equal_range(Key(around));
       for (auto entry = range.first; entry != range.second; ++entry)
       {
-        const double d = Distance2(x, entry->Position);
-        if (d <= best && (nearest < 0 || d < best || entry->Id < nearest))
+        const double d = Distance2(x, entry->second.Position);
+        if (d <= best && (nearest < 0 || d < best || entry->second.Id < nearest))
         {
           best = d;
-          nearest = entry->Id;
+          nearest = entry->second.Id;
         }
       }
     }
@@ -238,8 +243,7 @@ public:
 private:
   struct Entry
   {
-    uint64_t Key = 0;
-    vtkIdType Id = -1;
+    vtkIdType Id;
     double Position[3];
   };
 
@@ -270,7 +274,7 @@ private:
   }
 
   Frame Grid;
-  std::vector<Entry> Entries;
+  std::unordered_multimap<uint64_t, Entry> Entries;
 };
 
 // For each rank, this piece's boundary points that match one of that rank's (none for
@@ -325,9 +329,11 @@ std::vector<int> Partners(
   return partners;
 }
 
-// The faces of the piece around the given points, as polygons with their point and cell
-// data.
-vtkSmartPointer<vtkPolyData> RingFaces(vtkPolyData* piece, const std::vector<vtkIdType>& around)
+// The faces of the piece around the given points, with a point array saying what each
+// point is (RingPoint; positions are all the receiver needs: the normals come from
+// geometry).
+vtkSmartPointer<vtkPolyData> RingFaces(vtkPolyData* piece, const std::vector<char>& ghost,
+  const std::vector<char>& isBoundary, const std::vector<vtkIdType>& around)
 {
   auto ring = vtkSmartPointer<vtkPolyData>::New();
   if (around.empty())
@@ -340,16 +346,14 @@ vtkSmartPointer<vtkPolyData> RingFaces(vtkPolyData* piece, const std::vector<vtk
     isAround[p] = 1;
   }
   vtkNew<vtkPoints> points;
-  points->SetDataType(piece->GetPoints()->GetDataType());
+  points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> polys;
-  ring->GetPointData()->CopyAllocate(piece->GetPointData());
-  ring->GetCellData()->CopyAllocate(piece->GetCellData());
   vtkNew<vtkUnsignedCharArray> seamPoint;
   seamPoint->SetName(SeamPointArrayName);
   std::unordered_map<vtkIdType, vtkIdType> ringPoint;
   std::vector<vtkIdType> corners;
-  ForEachFace(piece,
-    [&](vtkIdType cellId, vtkIdType size, const vtkIdType* ids)
+  ForEachFace(piece, ghost,
+    [&](vtkIdType, vtkIdType size, const vtkIdType* ids)
     {
       if (std::none_of(ids, ids + size, [&](vtkIdType p) { return isAround[p] != 0; }))
       {
@@ -362,13 +366,12 @@ vtkSmartPointer<vtkPolyData> RingFaces(vtkPolyData* piece, const std::vector<vtk
         if (inserted.second)
         {
           points->InsertNextPoint(piece->GetPoint(ids[k]));
-          seamPoint->InsertNextValue(isAround[ids[k]]);
-          ring->GetPointData()->CopyData(piece->GetPointData(), ids[k], inserted.first->second);
+          seamPoint->InsertNextValue(
+            isAround[ids[k]] ? Cut : (isBoundary[ids[k]] ? Boundary : Interior));
         }
         corners[k] = inserted.first->second;
       }
-      ring->GetCellData()->CopyData(
-        piece->GetCellData(), cellId, polys->InsertNextCell(size, corners.data()));
+      polys->InsertNextCell(size, corners.data());
     });
   ring->SetPoints(points);
   ring->SetPolys(polys);
@@ -395,142 +398,146 @@ vtkSmartPointer<vtkPolyData> Exchange(
   return received;
 }
 
-// The piece's points, then the received points that are not the piece's own: for each
-// ring, the output point of each of its points. A sender's cut point becomes the piece's
-// nearest copy of it; every other point is new.
-std::vector<std::vector<vtkIdType>> MapRingPoints(
-  vtkPolyData* piece, const Rings& rings, const PointGrid& grid, vtkIdType& total)
+// The seam mesh: the piece's faces around its cut points and the faces the other ranks
+// sent, on one set of points. A sender's cut point becomes the piece's nearest copy of it;
+// a sender's other boundary points become one point with the other senders' copies of it
+// (where three pieces meet, two senders send the point between them); the other received
+// points are new. Only cut points get their piece id (the fans of the others are partial
+// here), every other point -1.
+class SeamMeshBuilder
 {
-  total = piece->GetNumberOfPoints();
-  std::vector<std::vector<vtkIdType>> outputPoint(rings.size());
-  for (size_t k = 0; k < rings.size(); ++k)
+public:
+  SeamMeshBuilder(vtkPolyData* piece, const std::vector<char>& isCut, const Frame& frame)
+    : Piece(piece)
+    , IsCut(isCut)
+    , ReceivedBoundary(frame)
   {
-    const vtkIdType n = rings[k]->GetNumberOfPoints();
+    this->Points->SetDataTypeToDouble();
+    this->PieceIds->SetName(vtkPhongSeamFacesExchange::PiecePointIdsArrayName());
+  }
+
+  void AddPieceFaces(const std::vector<char>& ghost)
+  {
+    ForEachFace(this->Piece, ghost,
+      [&](vtkIdType, vtkIdType size, const vtkIdType* ids)
+      {
+        if (std::any_of(ids, ids + size, [&](vtkIdType p) { return this->IsCut[p] != 0; }))
+        {
+          this->AddFace(size, ids, [this](vtkIdType p) { return this->PiecePoint(p); });
+        }
+      });
+  }
+
+  void AddRing(vtkPolyData* ring, const PointGrid& grid)
+  {
+    const vtkIdType n = ring->GetNumberOfPoints();
     auto* seamPoint =
-      vtkUnsignedCharArray::SafeDownCast(rings[k]->GetPointData()->GetArray(SeamPointArrayName));
-    outputPoint[k].resize(static_cast<size_t>(n));
+      vtkUnsignedCharArray::SafeDownCast(ring->GetPointData()->GetArray(SeamPointArrayName));
+    std::vector<vtkIdType> meshPoint(static_cast<size_t>(n));
+    const bool flagged = seamPoint && seamPoint->GetNumberOfTuples() == n;
     for (vtkIdType i = 0; i < n; ++i)
     {
-      const bool onCut = seamPoint && seamPoint->GetNumberOfTuples() == n && seamPoint->GetValue(i);
-      const vtkIdType own = onCut ? grid.Find(rings[k]->GetPoint(i)) : -1;
-      outputPoint[k][i] = own >= 0 ? own : total++;
+      meshPoint[i] = this->ReceivedPoint(ring->GetPoint(i),
+        flagged ? seamPoint->GetValue(i) : static_cast<unsigned char>(Interior), grid);
     }
-  }
-  return outputPoint;
-}
-
-void AppendPoints(vtkPolyData* piece, const Rings& rings,
-  const std::vector<std::vector<vtkIdType>>& outputPoint, vtkIdType total, vtkPolyData* output)
-{
-  const vtkIdType own = piece->GetNumberOfPoints();
-  vtkNew<vtkPoints> points;
-  points->SetDataType(piece->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(total);
-  points->GetData()->InsertTuples(0, own, 0, piece->GetPoints()->GetData());
-  vtkDataSetAttributes::FieldList fields(static_cast<int>(rings.size()) + 1);
-  fields.IntersectFieldList(piece->GetPointData());
-  for (const auto& ring : rings)
-  {
-    fields.IntersectFieldList(ring->GetPointData());
-  }
-  vtkPointData* data = output->GetPointData();
-  data->CopyAllocate(fields, total);
-  data->CopyData(fields, piece->GetPointData(), 0, 0, own, 0);
-  for (size_t k = 0; k < rings.size(); ++k)
-  {
-    for (vtkIdType i = 0; i < rings[k]->GetNumberOfPoints(); ++i)
-    {
-      if (outputPoint[k][i] >= own)
-      {
-        points->SetPoint(outputPoint[k][i], rings[k]->GetPoint(i));
-        data->CopyData(
-          fields, rings[k]->GetPointData(), static_cast<int>(k) + 1, i, outputPoint[k][i]);
-      }
-    }
-  }
-  output->SetPoints(points);
-}
-
-// Cells in the polydata's order: the piece's vertices, lines and polygons, the received
-// faces (polygons too), then the piece's strips; the received ones flagged as ghosts.
-void AppendFaces(vtkPolyData* piece, const Rings& rings,
-  const std::vector<std::vector<vtkIdType>>& outputPoint, vtkPolyData* output)
-{
-  vtkIdType ghostFaces = 0, ghostCorners = 0;
-  for (const auto& ring : rings)
-  {
-    ghostFaces += ring->GetPolys()->GetNumberOfCells();
-    ghostCorners += ring->GetPolys()->GetNumberOfConnectivityIds();
-  }
-  vtkCellArray* ownPolys = piece->GetPolys();
-  vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(ownPolys->GetNumberOfCells() + ghostFaces,
-    ownPolys->GetNumberOfConnectivityIds() + ghostCorners);
-  polys->Append(ownPolys);
-  vtkDataSetAttributes::FieldList fields(static_cast<int>(rings.size()) + 1);
-  fields.IntersectFieldList(piece->GetCellData());
-  for (const auto& ring : rings)
-  {
-    fields.IntersectFieldList(ring->GetCellData());
-  }
-  const vtkIdType beforeStrips =
-    piece->GetNumberOfVerts() + piece->GetNumberOfLines() + ownPolys->GetNumberOfCells();
-  const vtkIdType total = piece->GetNumberOfCells() + ghostFaces;
-  vtkCellData* data = output->GetCellData();
-  data->CopyAllocate(fields, total);
-  data->CopyData(fields, piece->GetCellData(), 0, 0, beforeStrips, 0);
-  vtkIdType cell = beforeStrips;
-  std::vector<vtkIdType> corners;
-  for (size_t k = 0; k < rings.size(); ++k)
-  {
-    auto faces = vtk::TakeSmartPointer(rings[k]->GetPolys()->NewIterator());
+    auto faces = vtk::TakeSmartPointer(ring->GetPolys()->NewIterator());
     for (faces->GoToFirstCell(); !faces->IsDoneWithTraversal(); faces->GoToNextCell())
     {
       vtkIdType size;
       const vtkIdType* ids;
       faces->GetCurrentCell(size, ids);
-      corners.resize(static_cast<size_t>(size));
-      for (vtkIdType i = 0; i < size; ++i)
+      if (std::all_of(ids, ids + size, [n](vtkIdType p) { return p >= 0 && p < n; }))
       {
-        corners[i] = outputPoint[k][ids[i]];
+        this->AddFace(size, ids, [&](vtkIdType p) { return meshPoint[p]; });
       }
-      polys->InsertNextCell(size, corners.data());
-      data->CopyData(fields, rings[k]->GetCellData(), static_cast<int>(k) + 1,
-        faces->GetCurrentCellId(), cell++);
     }
   }
-  data->CopyData(fields, piece->GetCellData(), 0, cell, piece->GetNumberOfStrips(), beforeStrips);
-  vtkNew<vtkUnsignedCharArray> ghosts;
-  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
-  ghosts->SetNumberOfTuples(total);
-  ghosts->FillValue(0);
-  std::fill_n(ghosts->GetPointer(beforeStrips), ghostFaces,
-    static_cast<unsigned char>(vtkDataSetAttributes::DUPLICATECELL));
-  data->AddArray(ghosts);
-  output->SetVerts(piece->GetVerts());
-  output->SetLines(piece->GetLines());
-  output->SetPolys(polys);
-  output->SetStrips(piece->GetStrips());
-}
 
-// The input without its own ghost cells (the faces they hold come again from their ranks).
-vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* input)
-{
-  auto piece = vtkSmartPointer<vtkPolyData>::New();
-  if (!input)
+  void Write(vtkPolyData* output)
   {
-    return piece;
+    output->SetPoints(this->Points);
+    output->SetPolys(this->Polys);
+    output->GetPointData()->AddArray(this->PieceIds);
   }
-  piece->ShallowCopy(input);
-  if (vtkUnsignedCharArray* ghosts = input->GetCellGhostArray())
+
+private:
+  vtkIdType ReceivedPoint(const double x[3], unsigned char kind, const PointGrid& grid)
   {
-    if (ghosts->GetNumberOfTuples() > 0 && ghosts->GetRange(0)[1] != 0)
+    const vtkIdType own = kind == Cut ? grid.Find(x) : -1;
+    if (own >= 0)
     {
-      piece->RemoveGhostCells();
+      return this->PiecePoint(own);
     }
-    piece->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+    if (kind == Interior)
+    {
+      return this->NewPoint(x, -1);
+    }
+    vtkIdType known = this->ReceivedBoundary.Find(x);
+    if (known < 0)
+    {
+      known = this->NewPoint(x, -1);
+      this->ReceivedBoundary.Insert(known, x);
+    }
+    return known;
   }
-  return piece;
+
+  vtkIdType NewPoint(const double x[3], vtkIdType pieceId)
+  {
+    this->PieceIds->InsertNextValue(pieceId);
+    return this->Points->InsertNextPoint(x);
+  }
+
+  vtkIdType PiecePoint(vtkIdType p)
+  {
+    const auto found = this->MeshPointOf.find(p);
+    if (found != this->MeshPointOf.end())
+    {
+      return found->second;
+    }
+    const vtkIdType added = this->NewPoint(this->Piece->GetPoint(p), this->IsCut[p] ? p : -1);
+    this->MeshPointOf.emplace(p, added);
+    return added;
+  }
+
+  template <typename MeshPoint>
+  void AddFace(vtkIdType size, const vtkIdType* ids, MeshPoint&& meshPoint)
+  {
+    this->Corners.resize(static_cast<size_t>(size));
+    std::transform(ids, ids + size, this->Corners.begin(), meshPoint);
+    this->Polys->InsertNextCell(size, this->Corners.data());
+  }
+
+  vtkPolyData* Piece;
+  const std::vector<char>& IsCut;
+  PointGrid ReceivedBoundary;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Polys;
+  vtkNew<vtkIdTypeArray> PieceIds;
+  std::unordered_map<vtkIdType, vtkIdType> MeshPointOf;
+  std::vector<vtkIdType> Corners;
+};
+
+// Per cell: a ghost cell (flagged in the ghost array, or in the one vtkPhongGhostCellsStash
+// renamed it to), left out of the piece; empty when there is none.
+std::vector<char> GhostCells(vtkPolyData* piece)
+{
+  std::vector<char> ghost;
+  for (const char* name :
+    { vtkDataSetAttributes::GhostArrayName(), vtkPhongGhostCellsStash::StashedGhostArrayName() })
+  {
+    vtkDataArray* flags = piece->GetCellData()->GetArray(name);
+    if (!flags || flags->GetNumberOfTuples() != piece->GetNumberOfCells())
+    {
+      continue;
+    }
+    ghost.resize(static_cast<size_t>(piece->GetNumberOfCells()), 0);
+    const int mask = vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
+    for (vtkIdType cell = 0; cell < flags->GetNumberOfTuples(); ++cell)
+    {
+      ghost[cell] = ghost[cell] || (static_cast<int>(flags->GetComponent(cell, 0)) & mask);
+    }
+  }
+  return ghost;
 }
 }
 
@@ -555,41 +562,49 @@ vtkCxxSetObjectMacro(vtkPhongSeamFacesExchange, Controller, vtkMultiProcessContr
 int vtkPhongSeamFacesExchange::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* piece = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->NumberOfBoundaryPoints = this->NumberOfReceivedFaces = 0;
   this->NumberOfPartners = 0;
   vtkMultiProcessController* controller = this->Controller;
-  if (!controller || controller->GetNumberOfProcesses() < 2)
+  if (!this->Enabled || !piece || !controller || controller->GetNumberOfProcesses() < 2)
   {
-    output->ShallowCopy(input);
-    return 1;
+    return 1; // no seam: an empty mesh
   }
-  const vtkSmartPointer<vtkPolyData> piece = WithoutGhostCells(input);
-  const std::vector<vtkIdType> boundary = BoundaryPoints(piece);
+  const std::vector<char> ghost = GhostCells(piece);
+  const std::vector<vtkIdType> boundary = BoundaryPoints(piece, ghost);
   this->NumberOfBoundaryPoints = static_cast<vtkIdType>(boundary.size());
   const Frame frame = GlobalFrame(controller, piece, this->Tolerance);
   const Boundaries all = GatherBoundaries(controller, piece, boundary);
-  const PointGrid grid(frame, piece, boundary);
+  PointGrid grid(frame);
+  std::vector<char> isBoundary(static_cast<size_t>(piece->GetNumberOfPoints()), 0);
+  for (vtkIdType p : boundary)
+  {
+    grid.Insert(p, piece->GetPoint(p));
+    isBoundary[p] = 1;
+  }
   const std::vector<std::vector<vtkIdType>> matched = MatchAll(controller, grid, all);
   const std::vector<int> partners = Partners(controller, matched);
+  std::vector<char> isCut(static_cast<size_t>(piece->GetNumberOfPoints()), 0);
   Rings rings;
   for (int partner : partners)
   {
-    rings.push_back(Exchange(controller, partner, RingFaces(piece, matched[partner])));
+    rings.push_back(
+      Exchange(controller, partner, RingFaces(piece, ghost, isBoundary, matched[partner])));
     this->NumberOfReceivedFaces += rings.back()->GetNumberOfPolys();
+    for (vtkIdType p : matched[partner])
+    {
+      isCut[p] = 1;
+    }
   }
   this->NumberOfPartners = static_cast<int>(partners.size());
-  if (this->NumberOfReceivedFaces == 0)
+  SeamMeshBuilder seam(piece, isCut, frame);
+  seam.AddPieceFaces(ghost);
+  for (const auto& ring : rings)
   {
-    output->ShallowCopy(piece);
-    return 1;
+    seam.AddRing(ring, grid);
   }
-  vtkIdType total = 0;
-  const auto outputPoint = MapRingPoints(piece, rings, grid, total);
-  AppendPoints(piece, rings, outputPoint, total, output);
-  AppendFaces(piece, rings, outputPoint, output);
-  output->GetFieldData()->ShallowCopy(piece->GetFieldData());
+  seam.Write(output);
   return 1;
 }
 
@@ -597,6 +612,7 @@ int vtkPhongSeamFacesExchange::RequestData(
 void vtkPhongSeamFacesExchange::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Enabled: " << (this->Enabled ? "On" : "Off") << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "NumberOfBoundaryPoints: " << this->NumberOfBoundaryPoints << "\n";

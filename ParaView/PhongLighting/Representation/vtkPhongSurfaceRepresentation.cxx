@@ -16,6 +16,7 @@
 #include "vtkPhongLightingSettings.h"
 #include "vtkPhongProperty.h"
 #include "vtkPhongSeamFacesExchange.h"
+#include "vtkPhongSeamNormalsPatch.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -79,7 +80,12 @@ void vtkPhongSurfaceRepresentation::ConnectNormals()
     this->GhostTrim->SetInputConnection(this->GeometryFilter->GetOutputPort());
     this->Normals->SetInputConnection(this->GhostTrim->GetOutputPort());
     this->GhostRemoval->SetInputConnection(this->Normals->GetOutputPort());
-    this->MultiBlockMaker->SetInputConnection(this->GhostRemoval->GetOutputPort());
+    this->SeamFaces->SetInputConnection(this->GeometryFilter->GetOutputPort());
+    this->SeamNormals->SetInputConnection(this->SeamFaces->GetOutputPort());
+    this->SeamPatch->SetInputConnection(0, this->GhostRemoval->GetOutputPort());
+    this->SeamPatch->SetInputConnection(1, this->SeamNormals->GetOutputPort());
+    this->MultiBlockMaker->SetInputConnection(
+      this->PatchesSeams ? this->SeamPatch->GetOutputPort() : this->GhostRemoval->GetOutputPort());
   }
   else
   {
@@ -104,12 +110,8 @@ vtkAlgorithmOutput* vtkPhongSurfaceRepresentation::GetInternalOutputPort(int por
   {
     return internal;
   }
-  if (vtkPhongSurfaceRepresentation::ExchangesSeamFaces(data))
-  {
-    this->SeamFaces->SetInputConnection(internal);
-    this->GhostStash->SetInputConnection(this->SeamFaces->GetOutputPort());
-  }
-  else if (vtkPhongSurfaceRepresentation::IsParallel())
+  if (vtkPhongSurfaceRepresentation::IsParallel() &&
+    !vtkPhongSurfaceRepresentation::ExchangesSeamFaces(data))
   {
     this->GhostCells->SetInputConnection(internal);
     this->GhostStash->SetInputConnection(this->GhostCells->GetOutputPort());
@@ -147,12 +149,20 @@ int vtkPhongSurfaceRepresentation::RequestData(
     this->GhostCells->Modified();
     this->SeamFaces->Modified();
   }
-  // A piece's points on a cut, and the ghost cells' points, come as copies (a source's own
-  // pieces compute them by different sums): the normals join them. The seam faces'
-  // exchange already puts its faces on the piece's own copies, and a piece's points are
-  // not joined serially either: no join there (it would cost a copy of the piece).
-  this->Normals->SetJoinCoincidentPoints(acrossPieces &&
-    !vtkPhongSurfaceRepresentation::ExchangesSeamFaces(vtkDataObject::GetData(inputVector[0], 0)));
+  // Polydata: the piece's normals, then its cut points' from the seam mesh. Other data: a
+  // piece's points on a cut, and the ghost cells' points, come as copies (a source's own
+  // pieces compute them by different sums): the normals join them. The seam mesh already
+  // has the piece's own copies, and a piece's points are not joined serially either.
+  const bool seams = acrossPieces &&
+    vtkPhongSurfaceRepresentation::ExchangesSeamFaces(vtkDataObject::GetData(inputVector[0], 0));
+  this->SeamFaces->SetEnabled(seams);
+  this->Normals->SetJoinCoincidentPoints(acrossPieces && !seams);
+  this->ConfigureSeamNormals();
+  if (seams != this->PatchesSeams)
+  {
+    this->PatchesSeams = seams;
+    this->ConnectNormals();
+  }
   const auto wholeExtent = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
   if (this->StashesGhostCells() && inputVector[0]->GetNumberOfInformationObjects() == 1 &&
     inputVector[0]->GetInformationObject(0)->Has(wholeExtent))
@@ -164,6 +174,17 @@ int vtkPhongSurfaceRepresentation::RequestData(
     }
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongSurfaceRepresentation::ConfigureSeamNormals()
+{
+  this->SeamNormals->SetWeighting(this->Normals->GetWeighting());
+  this->SeamNormals->SetFeatureAngle(this->Normals->GetFeatureAngle());
+  this->SeamNormals->SetSplitting(this->Normals->GetSplitting());
+  this->SeamNormals->SetJoinCoincidentPoints(false);
+  const char* originalIds = this->Normals->GetOriginalPointIdsArrayName();
+  this->SeamPatch->SetOriginalPointIdsArrayName(originalIds ? originalIds : "vtkOriginalPointIds");
 }
 
 //------------------------------------------------------------------------------
@@ -336,8 +357,13 @@ void vtkPhongSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   this->LightingSettings->PrintSelf(os, indent.GetNextIndent());
   os << indent << "GhostCells:\n";
   this->GhostCells->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "PatchesSeams: " << (this->PatchesSeams ? "yes" : "no") << "\n";
   os << indent << "SeamFaces:\n";
   this->SeamFaces->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "SeamNormals:\n";
+  this->SeamNormals->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "SeamPatch:\n";
+  this->SeamPatch->PrintSelf(os, indent.GetNextIndent());
   os << indent << "GhostStash:\n";
   this->GhostStash->PrintSelf(os, indent.GetNextIndent());
   os << indent << "GhostTrim:\n";

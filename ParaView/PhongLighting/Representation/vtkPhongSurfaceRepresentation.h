@@ -15,16 +15,18 @@
  * normals of its own piece; ComputeNormals off draws the normals the surface carries.
  * Under MPI the pieces' normals agree where pieces meet (NormalsAcrossPieces, default on):
  * the representation gives each piece ghost cells and keeps them through the geometry filter
- * (vtkPhongGhostCellsStash) until the normals are made, then drops them. Polydata pieces get
- * only the faces around the points where pieces meet (vtkPhongSeamFacesExchange); other data
- * one level of ghost cells (vtkGhostCellsGenerator: ParaView's sources and filters,
- * RedistributeDataSet included, mostly ignore ghost requests), which costs far more. Pieces
- * hold copies of the points on their cuts; a source's own pieces (ParaView's Sphere under
- * MPI) compute them by different sums, a few float steps apart. The seam faces' exchange
- * puts the faces it brings on the piece's own copies (by position, within a millionth of the
- * diagonal). The ghost cells bring copies along, and on that path the normals treat the
- * copies of a point (by global point id where the data has them, else by position) as one
- * vertex: vtkOpenMeshNormals' JoinCoincidentPoints.
+ * (vtkPhongGhostCellsStash) until the normals are made, then drops them. Polydata pieces
+ * need less: each rank computes its piece's normals alone, and then the normals of its cut
+ * points over the faces around them, its own and the other ranks' (vtkPhongSeamFacesExchange,
+ * a second vtkOpenMeshNormals, vtkPhongSeamNormalsPatch). Other data gets one level of ghost
+ * cells (vtkGhostCellsGenerator: ParaView's sources and filters, RedistributeDataSet
+ * included, mostly ignore ghost requests), which costs far more. Pieces hold copies of the
+ * points on their cuts; a source's own pieces (ParaView's Sphere under MPI) compute them by
+ * different sums, a few float steps apart. The seam mesh puts the faces it brings on the
+ * piece's own copies (by position, within a millionth of the diagonal). The ghost cells bring
+ * copies along, and on that path the normals treat the copies of a point (by global point id
+ * where the data has them, else by position) as one vertex: vtkOpenMeshNormals'
+ * JoinCoincidentPoints.
  *
  * @sa vtkPhongCompositePolyDataMapper vtkPhongProperty vtkOpenMeshNormals
  */
@@ -43,6 +45,7 @@ class vtkOpenMeshNormals;
 class vtkPhongLightingSettings;
 class vtkPhongGhostCellsStash;
 class vtkPhongSeamFacesExchange;
+class vtkPhongSeamNormalsPatch;
 
 class VTKPHONGREPRESENTATIONS_EXPORT vtkPhongSurfaceRepresentation
   : public vtkGeometryRepresentationWithFaces
@@ -170,9 +173,10 @@ protected:
   static bool IsParallel();
 
   /**
-   * Whether the input's ghost faces come from vtkPhongSeamFacesExchange (polydata under
-   * MPI) rather than from vtkGhostCellsGenerator. The same on every rank: it depends on the
-   * number of ranks and the input's type.
+   * Whether the normals of the points where pieces meet come from the seam mesh of
+   * vtkPhongSeamFacesExchange (polydata under MPI) rather than from ghost cells made by
+   * vtkGhostCellsGenerator. The same on every rank: it depends on the number of ranks and
+   * the input's type.
    */
   static bool ExchangesSeamFaces(vtkDataObject* input);
 
@@ -191,9 +195,15 @@ protected:
 
   /**
    * Feed the multiblock maker through the ghost trim, the normals and the ghost removal
-   * (ComputeNormals on) or straight from the geometry filter.
+   * (ComputeNormals on), then the seam patch (PatchesSeams: polydata under MPI), or
+   * straight from the geometry filter.
    */
   void ConnectNormals();
+
+  /**
+   * Give the seam mesh's normals the settings of the piece's.
+   */
+  void ConfigureSeamNormals();
 
   /**
    * Tell the superclass which normals to draw: none named (the computed ones stay active)
@@ -205,12 +215,15 @@ protected:
   bool NormalsAcrossPieces = true;
   std::string NormalArray;
   vtkNew<vtkGhostCellsGenerator> GhostCells;
-  vtkNew<vtkPhongSeamFacesExchange> SeamFaces;
   vtkNew<vtkPhongGhostCellsStash> GhostStash;
   vtkNew<vtkPhongGhostCellsStash> GhostTrim;
   vtkNew<vtkOpenMeshNormals> Normals;
   vtkNew<vtkPhongLightingSettings> LightingSettings;
   vtkNew<vtkPhongGhostCellsStash> GhostRemoval;
+  bool PatchesSeams = false;
+  vtkNew<vtkPhongSeamFacesExchange> SeamFaces;
+  vtkNew<vtkOpenMeshNormals> SeamNormals;
+  vtkNew<vtkPhongSeamNormalsPatch> SeamPatch;
 
 private:
   vtkPhongSurfaceRepresentation(const vtkPhongSurfaceRepresentation&) = delete;
