@@ -250,12 +250,17 @@ void vtkPhongClosedSurface::Update(vtkOpenGLIndexBufferObject* triangles,
   {
     return;
   }
-  if (indices.size() / 3 >= vtkPhongBackgroundTask::LargeTriangles)
+  const Closure closure = MayBeClosed(indices, points);
+  if (closure == Closure::None)
   {
-    this->AnalyseInBackground(std::move(indices), points);
     return;
   }
-  this->Orientation = Analyse(indices, points);
+  if (indices.size() / 3 >= vtkPhongBackgroundTask::LargeTriangles)
+  {
+    this->AnalyseInBackground(std::move(indices), points, closure);
+    return;
+  }
+  this->Orientation = Analyse(indices, points, closure);
 }
 
 //------------------------------------------------------------------------------
@@ -267,14 +272,14 @@ bool vtkPhongClosedSurface::IsAnalysing() const
 //------------------------------------------------------------------------------
 // The thread works on its own copies: the input's points may change, or go, meanwhile.
 void vtkPhongClosedSurface::AnalyseInBackground(
-  std::vector<unsigned int> indices, vtkPolyData* input)
+  std::vector<unsigned int> indices, vtkPolyData* input, Closure closure)
 {
   vtkSmartPointer<vtkPolyData> copy = vtkPhongBufferBlocks::CopyOfPoints(input);
   this->Pending = std::make_unique<Background>();
   Background* pending = this->Pending.get();
-  pending->Task =
-    std::make_unique<vtkPhongBackgroundTask>([pending, copy, indices = std::move(indices)]() mutable
-      { pending->Orientation = Analyse(indices, copy); });
+  pending->Task = std::make_unique<vtkPhongBackgroundTask>(
+    [pending, copy, closure, indices = std::move(indices)]() mutable
+    { pending->Orientation = Analyse(indices, copy, closure); });
 }
 
 //------------------------------------------------------------------------------
@@ -291,16 +296,30 @@ void vtkPhongClosedSurface::CollectBackground(bool wait)
 }
 
 //------------------------------------------------------------------------------
+// One pass each, no copy: what Analyse may find.
+vtkPhongClosedSurface::Closure vtkPhongClosedSurface::MayBeClosed(
+  const std::vector<unsigned int>& indices, vtkPolyData* input)
+{
+  if (MayBeClosedByIds(indices, input))
+  {
+    return Closure::ByIds;
+  }
+  return MayBeClosedAtPositions(indices, input) ? Closure::AtPositions : Closure::None;
+}
+
+//------------------------------------------------------------------------------
 // Most closed meshes are closed by their point ids already, and need no welding: its sort
 // of the points is the analysis's longest step. A surface closed by ids is closed, whatever
 // points share a position (two solids touching at a corner); the welding only finds more
-// (split normals, per-face points).
-int vtkPhongClosedSurface::Analyse(std::vector<unsigned int>& indices, vtkPolyData* input)
+// (split normals, per-face points). `closure`: MayBeClosed's answer for these triangles.
+int vtkPhongClosedSurface::Analyse(
+  std::vector<unsigned int>& indices, vtkPolyData* input, Closure closure)
 {
-  const bool closedByIds = MayBeClosedByIds(indices, input) && IsClosedAndConsistent(indices);
+  const bool closedByIds = closure == Closure::ByIds && IsClosedAndConsistent(indices);
+  const bool mayWeld = closure == Closure::AtPositions ||
+    (closure == Closure::ByIds && MayBeClosedAtPositions(indices, input));
   if (!closedByIds &&
-    !(MayBeClosedAtPositions(indices, input) && WeldTriangles(indices, WeldPoints(input)) &&
-      IsClosedAndConsistent(indices)))
+    !(mayWeld && WeldTriangles(indices, WeldPoints(input)) && IsClosedAndConsistent(indices)))
   {
     return 0;
   }

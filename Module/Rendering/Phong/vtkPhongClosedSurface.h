@@ -29,7 +29,9 @@
  * A surface of more than 256k triangles is analysed on a thread of its own, on copies of the
  * indices and points, so that its first frames draw as stock VTK's do (nothing culled)
  * while the analysis runs (about 0.1 s a million triangles closed by their ids, beside
- * llvmpipe on two cores); the frame after it ends culls.
+ * llvmpipe on two cores); the frame after it ends culls. The hashed sums run first, on the
+ * frame's own thread: a surface they find open (a terrain, a piece of a surface split
+ * between ranks) costs no copy of its points and no thread.
  * A new upload first waits for the analysis of the previous one, so that at most one runs.
  *
  * Per view, HiddenFaces() answers whether the camera sees all of it from outside: every
@@ -110,8 +112,17 @@ public:
     vtkShaderProperty* legacyShaders, int clippingPlanes);
 
 private:
-  static int Analyse(std::vector<unsigned int>& indices, vtkPolyData* input);
-  void AnalyseInBackground(std::vector<unsigned int> indices, vtkPolyData* input);
+  // Which way the triangles may be closed, from the hashed sums over their edges: by their
+  // points' ids, or only with the points at one position taken as one; None: open.
+  enum class Closure
+  {
+    None,
+    ByIds,
+    AtPositions
+  };
+  static Closure MayBeClosed(const std::vector<unsigned int>& indices, vtkPolyData* input);
+  static int Analyse(std::vector<unsigned int>& indices, vtkPolyData* input, Closure closure);
+  void AnalyseInBackground(std::vector<unsigned int> indices, vtkPolyData* input, Closure closure);
   void CollectBackground(bool wait);
   static bool HasConcavePolygons(vtkPolyData* input);
   static bool MayBeClosedByIds(const std::vector<unsigned int>& indices, vtkPolyData* input);
