@@ -166,9 +166,9 @@ protected:
   void SetupDefaults() override;
 
   /**
-   * Whether this process is one of several MPI ranks: then ghost faces are made here
-   * (ExchangesSeamFaces says how; the input's own ghost cells, when it has some, are made
-   * again).
+   * Whether this process is one of several MPI ranks: then the pieces' normals are made to
+   * meet here (ExchangesSeamFaces says how; on the ghost-cell path the input's own ghost
+   * cells, when it has some, are made again).
    */
   static bool IsParallel();
 
