@@ -21,19 +21,6 @@ vtkStandardNewMacro(vtkPhongGhostCellsStash);
 
 namespace
 {
-// Per cell: whether the stashed flags make it a ghost (a duplicate or a hidden cell, the
-// cells vtkPolyData::RemoveGhostCells removes).
-std::vector<char> GhostFlags(vtkDataArray* flags)
-{
-  const int ghost = vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
-  std::vector<char> isGhost(static_cast<size_t>(flags->GetNumberOfTuples()));
-  for (vtkIdType cell = 0; cell < flags->GetNumberOfTuples(); ++cell)
-  {
-    isGhost[cell] = (static_cast<int>(flags->GetComponent(cell, 0)) & ghost) != 0;
-  }
-  return isGhost;
-}
-
 // Calls cell(cellId, size, ids) for every cell, in the polydata's order of cells.
 template <typename Cell>
 void ForEachCell(vtkPolyData* surface, Cell&& cell)
@@ -155,6 +142,18 @@ bool vtkPhongGhostCellsStash::RenameCellArray(vtkDataSet* data, const char* from
 }
 
 //------------------------------------------------------------------------------
+std::vector<char> vtkPhongGhostCellsStash::GhostFlags(vtkDataArray* flags)
+{
+  const int ghost = vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
+  std::vector<char> isGhost(static_cast<size_t>(flags->GetNumberOfTuples()));
+  for (vtkIdType cell = 0; cell < flags->GetNumberOfTuples(); ++cell)
+  {
+    isGhost[cell] = (static_cast<int>(flags->GetComponent(cell, 0)) & ghost) != 0;
+  }
+  return isGhost;
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongGhostCellsStash::TrimGhostCells(vtkPolyData* surface)
 {
   vtkDataArray* stashed = surface->GetCellData()->GetArray(StashedGhostArrayName());
@@ -223,7 +222,7 @@ int vtkPhongGhostCellsStash::RequestData(
       }
       else if (vtkDataArray* stashed = polyData->GetCellData()->GetArray(StashedGhostArrayName()))
       {
-        const std::vector<char> ghost = GhostFlags(stashed);
+        const std::vector<char> ghost = vtkPhongGhostCellsStash::GhostFlags(stashed);
         polyData->GetCellData()->RemoveArray(StashedGhostArrayName());
         RemoveCells(polyData, ghost);
       }

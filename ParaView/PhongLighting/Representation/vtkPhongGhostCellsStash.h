@@ -29,6 +29,9 @@
 #include "vtkPassInputTypeAlgorithm.h"
 #include "vtkPhongRepresentationsModule.h" // for export macro
 
+#include <vector> // for std::vector
+
+class vtkDataArray;
 class vtkDataSet;
 class vtkPolyData;
 
@@ -61,6 +64,12 @@ public:
    * The name the ghost-cell flags carry between the two stages.
    */
   static const char* StashedGhostArrayName() { return "vtkPhongStashedGhostType"; }
+
+  /**
+   * Per tuple of `flags` (ghost-cell flags, stashed or not): whether they make the cell a
+   * ghost that vtkPolyData::RemoveGhostCells would remove (a duplicate or a hidden cell).
+   */
+  static std::vector<char> GhostFlags(vtkDataArray* flags);
 
 protected:
   vtkPhongGhostCellsStash();

@@ -530,12 +530,10 @@ std::vector<char> GhostCells(vtkPolyData* piece)
     {
       continue;
     }
-    ghost.resize(static_cast<size_t>(piece->GetNumberOfCells()), 0);
-    const int mask = vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
-    for (vtkIdType cell = 0; cell < flags->GetNumberOfTuples(); ++cell)
-    {
-      ghost[cell] = ghost[cell] || (static_cast<int>(flags->GetComponent(cell, 0)) & mask);
-    }
+    const std::vector<char> flagged = vtkPhongGhostCellsStash::GhostFlags(flags);
+    ghost.resize(flagged.size(), 0);
+    std::transform(ghost.begin(), ghost.end(), flagged.begin(), ghost.begin(),
+      [](char a, char b) { return static_cast<char>(a || b); });
   }
   return ghost;
 }

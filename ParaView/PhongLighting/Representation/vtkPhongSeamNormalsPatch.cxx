@@ -86,7 +86,10 @@ int vtkPhongSeamNormalsPatch::RequestData(
   for (vtkIdType i = 0; i < pieceIds->GetNumberOfTuples(); ++i)
   {
     const vtkIdType p = pieceIds->GetValue(i);
-    copies[p] += p >= 0 && p < n ? 1 : 0;
+    if (p >= 0 && p < n)
+    {
+      ++copies[p];
+    }
   }
   auto patched = vtkSmartPointer<vtkDataArray>::Take(normals->NewInstance());
   patched->DeepCopy(normals);
