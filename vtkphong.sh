@@ -331,8 +331,10 @@ case "$command" in
     install_packages "${paraview_packages[@]}"
     build_paraview_plugin
     export PYTHONPATH="$paraview_build/python3-paraview/usr/lib/python3/dist-packages"
-    with_display /usr/bin/python3 "$root/ParaView/Testing/BenchPhongParaViewGrowth.py" \
-      --plugin "$paraview_build/lib/paraview-$paraview_version/plugins/PhongLighting/PhongLighting.so"
+    for normals in "" --normals; do
+      with_display /usr/bin/python3 "$root/ParaView/Testing/BenchPhongParaViewGrowth.py" $normals \
+        --plugin "$paraview_build/lib/paraview-$paraview_version/plugins/PhongLighting/PhongLighting.so"
+    done
     ;;
   bench)
     install_packages

@@ -82,32 +82,69 @@ std::uint64_t Mix(std::uint64_t x)
   return x ^ (x >> 31);
 }
 
+// How many indices the hashed sums read from the index buffer at a time (3 MB).
+constexpr size_t IndicesPerBlock = size_t(3) << 18;
+
+// A position's hash, by its bits as the welding compares them (-0 made 0 first); 0 for one
+// that is not finite.
+template <typename Position>
+std::uint64_t PositionHash(const Position& x)
+{
+  if (!IsFinite(x))
+  {
+    return 0;
+  }
+  std::uint64_t h = 0x243f6a8885a308d3ull;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double zeroed = static_cast<double>(x[axis]) + 0.0; // -0 and +0: one position
+    std::uint64_t bits;
+    std::memcpy(&bits, &zeroed, sizeof(bits));
+    h = Mix(h ^ bits);
+  }
+  return h != 0 ? h : 1;
+}
+
 // A closed, consistently oriented surface uses each edge once in each direction, so over all
 // its directed edges (a, b) the sum of f(a, b) - f(b, a) is exactly 0 (modulo 2^64) for any
-// f of the two corners. With f(a, b) = h(a) Mix(h(b)), h a hash of a point (`hash`), an open
-// surface leaves its boundary loops, whose sum is not 0 but with a chance of 2^-64: false
-// means open (or inconsistent) for certain, with one pass and no memory, before the exact
-// check (IsClosedAndConsistent). Degenerate triangles cancel themselves. A corner hashed 0,
-// or an index that names no point (the rest of the analysis reads every corner's position),
-// rules the surface out.
-template <typename Hash>
-bool EdgesMayPair(const std::vector<unsigned int>& indices, size_t points, const Hash& hash)
+// f of the two corners. With f(a, b) = h(a) Mix(h(b)), h a hash of a point, an open surface
+// leaves its boundary loops, whose sum is not 0 but with a chance of 2^-64: a sum not 0 means
+// open (or inconsistent) for certain, in one pass and no memory, before the exact check
+// (IsClosedAndConsistent). Two sums at once: h of the point's id (closed by ids) and of its
+// position (closed once the points at one position are one). Degenerate triangles cancel
+// themselves. An index that names no point, or a corner that is not finite (the rest of the
+// analysis reads every corner's position), rules both out.
+class EdgeSums
 {
-  std::uint64_t sum = 0;
-  for (size_t i = 0; i + 2 < indices.size(); i += 3)
+public:
+  template <typename Positions>
+  void Add(const std::vector<unsigned int>& indices, const Positions& positions)
   {
-    std::uint64_t h[3], g[3]; // f(a, b) = h(a) g(b)
+    const auto points = static_cast<size_t>(positions.size());
+    for (size_t i = 0; i + 2 < indices.size() && this->Valid; i += 3)
+    {
+      std::uint64_t ids[3], places[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const unsigned int p = indices[i + k];
+        places[k] = p < points ? PositionHash(positions[p]) : 0;
+        ids[k] = Mix(p ^ 0x243f6a8885a308d3ull) | 1;
+        this->Valid = this->Valid && places[k] != 0;
+      }
+      this->ById += Circulation(ids);
+      this->AtPosition += Circulation(places);
+    }
+  }
+  bool MayBeClosedByIds() const { return this->Valid && this->ById == 0; }
+  bool MayBeClosedAtPositions() const { return this->Valid && this->AtPosition == 0; }
+
+private:
+  // The triangle's sum of f(a, b) - f(b, a) over its edges, from its corners' hashes.
+  static std::uint64_t Circulation(const std::uint64_t h[3])
+  {
+    std::uint64_t g[3], sum = 0;
     for (int k = 0; k < 3; ++k)
     {
-      if (indices[i + k] >= points)
-      {
-        return false;
-      }
-      h[k] = hash(indices[i + k]);
-      if (h[k] == 0)
-      {
-        return false;
-      }
       g[k] = Mix(h[k] ^ 0x9e3779b97f4a7c15ull);
     }
     for (int k = 0; k < 3; ++k)
@@ -115,9 +152,13 @@ bool EdgesMayPair(const std::vector<unsigned int>& indices, size_t points, const
       const int next = (k + 1) % 3;
       sum += h[k] * g[next] - h[next] * g[k];
     }
+    return sum;
   }
-  return sum == 0;
-}
+
+  std::uint64_t ById = 0;
+  std::uint64_t AtPosition = 0;
+  bool Valid = true;
+};
 
 // Calls `visit(from, to)` for each directed edge of each triangle.
 template <typename Visit>
@@ -245,13 +286,10 @@ void vtkPhongClosedSurface::Update(vtkOpenGLIndexBufferObject* triangles,
     }
   }
   vtkSmartPointer<vtkPolyData> points = vtkPhongBufferBlocks::Points(blocks);
+  const Closure closure = points ? MayBeClosed(triangles, points) : Closure();
   std::vector<unsigned int> indices;
-  if (!points || !vtkPhongVisibleClusters::ReadIndices(triangles, indices))
-  {
-    return;
-  }
-  const Closure closure = MayBeClosed(indices, points);
-  if (closure == Closure::None)
+  if (!(closure.ByIds || closure.AtPositions) ||
+    !vtkPhongVisibleClusters::ReadIndices(triangles, indices))
   {
     return;
   }
@@ -296,15 +334,33 @@ void vtkPhongClosedSurface::CollectBackground(bool wait)
 }
 
 //------------------------------------------------------------------------------
-// One pass each, no copy: what Analyse may find.
+// What Analyse may find, from the hashed sums: one pass over VTK's index buffer, a block at a
+// time, so that an open surface (the most common large one) costs no copy of its indices.
 vtkPhongClosedSurface::Closure vtkPhongClosedSurface::MayBeClosed(
-  const std::vector<unsigned int>& indices, vtkPolyData* input)
+  vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input)
 {
-  if (MayBeClosedByIds(indices, input))
+  const size_t count = triangles->IndexCount;
+  if (count == 0 || count % 3 != 0 || !triangles->GetHandle())
   {
-    return Closure::ByIds;
+    return Closure();
   }
-  return MayBeClosedAtPositions(indices, input) ? Closure::AtPositions : Closure::None;
+  EdgeSums sums;
+  WithPositions(input,
+    [&](auto* array)
+    {
+      const auto positions = vtk::DataArrayTupleRange<3>(array);
+      std::vector<unsigned int> block;
+      for (size_t first = 0; first < count; first += block.size())
+      {
+        block.resize(std::min(IndicesPerBlock, count - first));
+        vtkPhongVisibleClusters::ReadIndices(triangles, first, block);
+        sums.Add(block, positions);
+      }
+    });
+  Closure closure;
+  closure.ByIds = sums.MayBeClosedByIds();
+  closure.AtPositions = sums.MayBeClosedAtPositions();
+  return closure;
 }
 
 //------------------------------------------------------------------------------
@@ -315,11 +371,10 @@ vtkPhongClosedSurface::Closure vtkPhongClosedSurface::MayBeClosed(
 int vtkPhongClosedSurface::Analyse(
   std::vector<unsigned int>& indices, vtkPolyData* input, Closure closure)
 {
-  const bool closedByIds = closure == Closure::ByIds && IsClosedAndConsistent(indices);
-  const bool mayWeld = closure == Closure::AtPositions ||
-    (closure == Closure::ByIds && MayBeClosedAtPositions(indices, input));
+  const bool closedByIds = closure.ByIds && IsClosedAndConsistent(indices);
   if (!closedByIds &&
-    !(mayWeld && WeldTriangles(indices, WeldPoints(input)) && IsClosedAndConsistent(indices)))
+    !(closure.AtPositions && WeldTriangles(indices, WeldPoints(input)) &&
+      IsClosedAndConsistent(indices)))
   {
     return 0;
   }
@@ -364,54 +419,6 @@ std::vector<std::uint32_t> vtkPhongClosedSurface::WeldPoints(vtkPolyData* input)
       { welded = WeldPositions(vtk::DataArrayTupleRange<3>(positions)); });
   }
   return welded;
-}
-
-//------------------------------------------------------------------------------
-// Whether the triangles may be closed by their point ids; the exact check needs every point
-// finite too.
-bool vtkPhongClosedSurface::MayBeClosedByIds(
-  const std::vector<unsigned int>& indices, vtkPolyData* input)
-{
-  bool finite = true;
-  WithPositions(input,
-    [&finite](auto* array)
-    {
-      for (const auto x : vtk::DataArrayTupleRange<3>(array))
-      {
-        finite = finite && IsFinite(x);
-      }
-    });
-  return finite &&
-    EdgesMayPair(indices, static_cast<size_t>(input->GetNumberOfPoints()),
-      [](unsigned int p) { return Mix(p ^ 0x243f6a8885a308d3ull) | 1; });
-}
-
-//------------------------------------------------------------------------------
-// Whether the triangles may be closed once points at one position are one: each position
-// hashed by its bits, as the welding compares them (-0 made 0 first), 0 for one that is not
-// finite (which rules out a triangle it is a corner of).
-bool vtkPhongClosedSurface::MayBeClosedAtPositions(
-  const std::vector<unsigned int>& indices, vtkPolyData* input)
-{
-  std::vector<std::uint64_t> hashes;
-  hashes.reserve(static_cast<size_t>(input->GetNumberOfPoints()));
-  WithPositions(input,
-    [&hashes](auto* array)
-    {
-      for (const auto x : vtk::DataArrayTupleRange<3>(array))
-      {
-        std::uint64_t h = 0x243f6a8885a308d3ull;
-        for (int axis = 0; axis < 3; ++axis)
-        {
-          const double zeroed = static_cast<double>(x[axis]) + 0.0; // -0 and +0: one position
-          std::uint64_t bits;
-          std::memcpy(&bits, &zeroed, sizeof(bits));
-          h = Mix(h ^ bits);
-        }
-        hashes.push_back(!IsFinite(x) ? 0 : (h != 0 ? h : 1));
-      }
-    });
-  return EdgesMayPair(indices, hashes.size(), [&hashes](unsigned int p) { return hashes[p]; });
 }
 
 //------------------------------------------------------------------------------

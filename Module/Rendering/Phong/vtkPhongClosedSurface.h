@@ -30,8 +30,9 @@
  * indices and points, so that its first frames draw as stock VTK's do (nothing culled)
  * while the analysis runs (about 0.1 s a million triangles closed by their ids, beside
  * llvmpipe on two cores); the frame after it ends culls. The hashed sums run first, on the
- * frame's own thread: a surface they find open (a terrain, a piece of a surface split
- * between ranks) costs no copy of its points and no thread.
+ * frame's own thread, reading VTK's index buffer a block of 3 MB at a time: a surface they
+ * find open (a terrain, a piece of a surface split between ranks) costs no copy of its
+ * indices or points, and no thread.
  * A new upload first waits for the analysis of the previous one, so that at most one runs.
  *
  * Per view, HiddenFaces() answers whether the camera sees all of it from outside: every
@@ -112,21 +113,18 @@ public:
     vtkShaderProperty* legacyShaders, int clippingPlanes);
 
 private:
-  // Which way the triangles may be closed, from the hashed sums over their edges: by their
-  // points' ids, or only with the points at one position taken as one; None: open.
-  enum class Closure
+  // Which ways the triangles may be closed, from the hashed sums over their edges: by their
+  // points' ids, or with the points at one position taken as one; neither: open.
+  struct Closure
   {
-    None,
-    ByIds,
-    AtPositions
+    bool ByIds = false;
+    bool AtPositions = false;
   };
-  static Closure MayBeClosed(const std::vector<unsigned int>& indices, vtkPolyData* input);
+  static Closure MayBeClosed(vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input);
   static int Analyse(std::vector<unsigned int>& indices, vtkPolyData* input, Closure closure);
   void AnalyseInBackground(std::vector<unsigned int> indices, vtkPolyData* input, Closure closure);
   void CollectBackground(bool wait);
   static bool HasConcavePolygons(vtkPolyData* input);
-  static bool MayBeClosedByIds(const std::vector<unsigned int>& indices, vtkPolyData* input);
-  static bool MayBeClosedAtPositions(const std::vector<unsigned int>& indices, vtkPolyData* input);
   static std::vector<std::uint32_t> WeldPoints(vtkPolyData* input);
   static bool WeldTriangles(
     std::vector<unsigned int>& indices, const std::vector<std::uint32_t>& welded);

@@ -153,10 +153,18 @@ bool vtkPhongVisibleClusters::ReadIndices(
     return false;
   }
   indices.resize(count);
-  glBindBuffer(GL_COPY_READ_BUFFER, triangles->GetHandle());
-  glGetBufferSubData(GL_COPY_READ_BUFFER, 0, count * sizeof(unsigned int), indices.data());
-  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  ReadIndices(triangles, 0, indices);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongVisibleClusters::ReadIndices(
+  vtkOpenGLIndexBufferObject* triangles, size_t first, std::vector<unsigned int>& indices)
+{
+  glBindBuffer(GL_COPY_READ_BUFFER, triangles->GetHandle());
+  glGetBufferSubData(GL_COPY_READ_BUFFER, static_cast<GLintptr>(first * sizeof(unsigned int)),
+    static_cast<GLsizeiptr>(indices.size() * sizeof(unsigned int)), indices.data());
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
 }
 
 //------------------------------------------------------------------------------

@@ -34,6 +34,7 @@
 #include "vtkNew.h"         // for vtkNew
 #include "vtkType.h"        // for vtkMTimeType
 
+#include <cstddef> // for size_t
 #include <cstdint> // for std::uint32_t
 #include <memory>  // for std::unique_ptr
 #include <vector>  // for std::vector
@@ -114,6 +115,13 @@ public:
    */
   static bool ReadIndices(
     vtkOpenGLIndexBufferObject* triangles, std::vector<unsigned int>& indices);
+
+  /**
+   * `indices.size()` of those indices from the `first` on, which the buffer holds: a block
+   * of them, for a pass that needs no copy of all.
+   */
+  static void ReadIndices(
+    vtkOpenGLIndexBufferObject* triangles, size_t first, std::vector<unsigned int>& indices);
 
   ///@{
   /**
