@@ -110,55 +110,65 @@ std::uint64_t PositionHash(const Position& x)
 // f of the two corners. With f(a, b) = h(a) Mix(h(b)), h a hash of a point, an open surface
 // leaves its boundary loops, whose sum is not 0 but with a chance of 2^-64: a sum not 0 means
 // open (or inconsistent) for certain, in one pass and no memory, before the exact check
-// (IsClosedAndConsistent). Two sums at once: h of the point's id (closed by ids) and of its
-// position (closed once the points at one position are one). Degenerate triangles cancel
-// themselves. An index that names no point, or a corner that is not finite (the rest of the
-// analysis reads every corner's position), rules both out.
+// (IsClosedAndConsistent). h hashes the point's id (closed by ids) or its position (closed
+// once the points at one position are one). Degenerate triangles cancel themselves. The sum
+// goes over blocks of indices. A corner hashed 0, or an index that names no point (the rest
+// of the analysis reads every corner's position), rules the surface out.
 class EdgeSums
 {
 public:
-  template <typename Positions>
-  void Add(const std::vector<unsigned int>& indices, const Positions& positions)
+  void AddById(const std::vector<unsigned int>& indices, size_t points)
   {
-    const auto points = static_cast<size_t>(positions.size());
-    for (size_t i = 0; i + 2 < indices.size() && this->Valid; i += 3)
-    {
-      std::uint64_t ids[3], places[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        const unsigned int p = indices[i + k];
-        places[k] = p < points ? PositionHash(positions[p]) : 0;
-        ids[k] = Mix(p ^ 0x243f6a8885a308d3ull) | 1;
-        this->Valid = this->Valid && places[k] != 0;
-      }
-      this->ById += Circulation(ids);
-      this->AtPosition += Circulation(places);
-    }
+    this->Add(indices, points, [](unsigned int p) { return Mix(p ^ 0x243f6a8885a308d3ull) | 1; });
   }
-  bool MayBeClosedByIds() const { return this->Valid && this->ById == 0; }
-  bool MayBeClosedAtPositions() const { return this->Valid && this->AtPosition == 0; }
+  template <typename Positions>
+  void AddAtPositions(const std::vector<unsigned int>& indices, const Positions& positions)
+  {
+    this->Add(indices, static_cast<size_t>(positions.size()),
+      [&positions](unsigned int p) { return PositionHash(positions[p]); });
+  }
+  bool MayPair() const { return this->Valid && this->Sum == 0; }
+  bool RuledOut() const { return !this->Valid; } // a corner hashed 0 or naming no point
 
 private:
-  // The triangle's sum of f(a, b) - f(b, a) over its edges, from its corners' hashes.
-  static std::uint64_t Circulation(const std::uint64_t h[3])
+  template <typename Hash>
+  void Add(const std::vector<unsigned int>& indices, size_t points, const Hash& hash)
   {
-    std::uint64_t g[3], sum = 0;
-    for (int k = 0; k < 3; ++k)
+    for (size_t i = 0; i + 2 < indices.size() && this->Valid; i += 3)
     {
-      g[k] = Mix(h[k] ^ 0x9e3779b97f4a7c15ull);
+      std::uint64_t h[3], g[3]; // f(a, b) = h(a) g(b)
+      for (int k = 0; k < 3; ++k)
+      {
+        h[k] = indices[i + k] < points ? hash(indices[i + k]) : 0;
+        this->Valid = this->Valid && h[k] != 0;
+        g[k] = Mix(h[k] ^ 0x9e3779b97f4a7c15ull);
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const int next = (k + 1) % 3;
+        this->Sum += h[k] * g[next] - h[next] * g[k];
+      }
     }
-    for (int k = 0; k < 3; ++k)
-    {
-      const int next = (k + 1) % 3;
-      sum += h[k] * g[next] - h[next] * g[k];
-    }
-    return sum;
   }
 
-  std::uint64_t ById = 0;
-  std::uint64_t AtPosition = 0;
+  std::uint64_t Sum = 0;
   bool Valid = true;
 };
+
+// Calls `add(block)` with the indices of VTK's index buffer `triangles`, a block at a time
+// (IndicesPerBlock), while `more()` (a sum is decided only at the end, unless ruled out).
+template <typename Add, typename More>
+void ForEachIndexBlock(vtkOpenGLIndexBufferObject* triangles, Add&& add, More&& more)
+{
+  const size_t count = triangles->IndexCount;
+  std::vector<unsigned int> block;
+  for (size_t first = 0; first < count && more(); first += block.size())
+  {
+    block.resize(std::min(IndicesPerBlock, count - first));
+    vtkPhongVisibleClusters::ReadIndices(triangles, first, block);
+    add(block);
+  }
+}
 
 // Calls `visit(from, to)` for each directed edge of each triangle.
 template <typename Visit>
@@ -286,10 +296,9 @@ void vtkPhongClosedSurface::Update(vtkOpenGLIndexBufferObject* triangles,
     }
   }
   vtkSmartPointer<vtkPolyData> points = vtkPhongBufferBlocks::Points(blocks);
-  const Closure closure = points ? MayBeClosed(triangles, points) : Closure();
+  const Closure closure = points ? MayBeClosed(triangles, points) : Closure::None;
   std::vector<unsigned int> indices;
-  if (!(closure.ByIds || closure.AtPositions) ||
-    !vtkPhongVisibleClusters::ReadIndices(triangles, indices))
+  if (closure == Closure::None || !vtkPhongVisibleClusters::ReadIndices(triangles, indices))
   {
     return;
   }
@@ -334,33 +343,42 @@ void vtkPhongClosedSurface::CollectBackground(bool wait)
 }
 
 //------------------------------------------------------------------------------
-// What Analyse may find, from the hashed sums: one pass over VTK's index buffer, a block at a
-// time, so that an open surface (the most common large one) costs no copy of its indices.
+// What Analyse may find, from the hashed sums over VTK's index buffer, read a block at a time
+// (no copy of the indices for a surface found open, the most common large one). By ids
+// first: most closed meshes are, and that sum reads no position. AtPositions: not closed by
+// ids, but may be once welded.
 vtkPhongClosedSurface::Closure vtkPhongClosedSurface::MayBeClosed(
   vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input)
 {
   const size_t count = triangles->IndexCount;
   if (count == 0 || count % 3 != 0 || !triangles->GetHandle())
   {
-    return Closure();
+    return Closure::None;
   }
-  EdgeSums sums;
+  if (HasOnlyFinitePoints(input))
+  {
+    EdgeSums byIds;
+    const auto points = static_cast<size_t>(input->GetNumberOfPoints());
+    ForEachIndexBlock(
+      triangles, [&](const std::vector<unsigned int>& block) { byIds.AddById(block, points); },
+      [&byIds] { return !byIds.RuledOut(); });
+    if (byIds.MayPair())
+    {
+      return Closure::ByIds;
+    }
+  }
+  EdgeSums atPositions;
   WithPositions(input,
     [&](auto* array)
     {
       const auto positions = vtk::DataArrayTupleRange<3>(array);
-      std::vector<unsigned int> block;
-      for (size_t first = 0; first < count; first += block.size())
-      {
-        block.resize(std::min(IndicesPerBlock, count - first));
-        vtkPhongVisibleClusters::ReadIndices(triangles, first, block);
-        sums.Add(block, positions);
-      }
+      ForEachIndexBlock(
+        triangles,
+        [&](const std::vector<unsigned int>& block)
+        { atPositions.AddAtPositions(block, positions); },
+        [&atPositions] { return !atPositions.RuledOut(); });
     });
-  Closure closure;
-  closure.ByIds = sums.MayBeClosedByIds();
-  closure.AtPositions = sums.MayBeClosedAtPositions();
-  return closure;
+  return atPositions.MayPair() ? Closure::AtPositions : Closure::None;
 }
 
 //------------------------------------------------------------------------------
@@ -371,10 +389,11 @@ vtkPhongClosedSurface::Closure vtkPhongClosedSurface::MayBeClosed(
 int vtkPhongClosedSurface::Analyse(
   std::vector<unsigned int>& indices, vtkPolyData* input, Closure closure)
 {
-  const bool closedByIds = closure.ByIds && IsClosedAndConsistent(indices);
+  const bool closedByIds = closure == Closure::ByIds && IsClosedAndConsistent(indices);
+  const bool mayWeld = closure == Closure::AtPositions ||
+    (closure == Closure::ByIds && MayBeClosedAtPositions(indices, input));
   if (!closedByIds &&
-    !(closure.AtPositions && WeldTriangles(indices, WeldPoints(input)) &&
-      IsClosedAndConsistent(indices)))
+    !(mayWeld && WeldTriangles(indices, WeldPoints(input)) && IsClosedAndConsistent(indices)))
   {
     return 0;
   }
@@ -419,6 +438,34 @@ std::vector<std::uint32_t> vtkPhongClosedSurface::WeldPoints(vtkPolyData* input)
       { welded = WeldPositions(vtk::DataArrayTupleRange<3>(positions)); });
   }
   return welded;
+}
+
+//------------------------------------------------------------------------------
+// The exact check by ids reads every corner's position: all must be finite.
+bool vtkPhongClosedSurface::HasOnlyFinitePoints(vtkPolyData* input)
+{
+  bool finite = true;
+  WithPositions(input,
+    [&finite](auto* array)
+    {
+      for (const auto x : vtk::DataArrayTupleRange<3>(array))
+      {
+        finite = finite && IsFinite(x);
+      }
+    });
+  return finite;
+}
+
+//------------------------------------------------------------------------------
+// The sum by positions over indices already read (Analyse's, for a surface the sum by ids
+// allowed: whether welding may close it when the exact check by ids fails).
+bool vtkPhongClosedSurface::MayBeClosedAtPositions(
+  const std::vector<unsigned int>& indices, vtkPolyData* input)
+{
+  EdgeSums atPositions;
+  WithPositions(input,
+    [&](auto* array) { atPositions.AddAtPositions(indices, vtk::DataArrayTupleRange<3>(array)); });
+  return atPositions.MayPair();
 }
 
 //------------------------------------------------------------------------------

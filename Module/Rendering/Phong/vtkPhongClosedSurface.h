@@ -113,14 +113,17 @@ public:
     vtkShaderProperty* legacyShaders, int clippingPlanes);
 
 private:
-  // Which ways the triangles may be closed, from the hashed sums over their edges: by their
-  // points' ids, or with the points at one position taken as one; neither: open.
-  struct Closure
+  // Which way the triangles may be closed, from the hashed sums over their edges: by their
+  // points' ids, or only with the points at one position taken as one; None: open.
+  enum class Closure
   {
-    bool ByIds = false;
-    bool AtPositions = false;
+    None,
+    ByIds,
+    AtPositions
   };
   static Closure MayBeClosed(vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input);
+  static bool HasOnlyFinitePoints(vtkPolyData* input);
+  static bool MayBeClosedAtPositions(const std::vector<unsigned int>& indices, vtkPolyData* input);
   static int Analyse(std::vector<unsigned int>& indices, vtkPolyData* input, Closure closure);
   void AnalyseInBackground(std::vector<unsigned int> indices, vtkPolyData* input, Closure closure);
   void CollectBackground(bool wait);
