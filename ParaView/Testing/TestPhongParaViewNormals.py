@@ -46,6 +46,11 @@ Checks, each failing with "ERROR:":
 7. bad input: the same polydata with one point of each piece made NaN (a ProgrammableFilter)
    draws, under MPI too, over the same pixels as ParaView's own "Surface" (within 1 %): the
    faces at the NaN point are left out, nothing hangs or crashes.
+8. data that carries point normals (a Calculator's constant +z, which no computation gives)
+   is drawn with its own by default (ComputeNormals "Where Missing"): the same picture as
+   ComputeNormals "Never", within a level, on the polydata as it comes (under MPI the file's
+   ranks without points count as carrying them) and redistributed; "Always" replaces them
+   (the picture differs as the faceted one does).
 """
 
 import argparse
@@ -56,7 +61,7 @@ from phong_paraview_testing import fail, load_plugin, prefer_pythonpath, report
 prefer_pythonpath()
 
 from paraview.simple import (  # noqa: E402 (after the path fix)
-    AddLight, CreateRenderView, Delaunay3D, PassArrays, GetParaViewVersion, Hide, RedistributeDataSet, Render,
+    AddLight, Calculator, CreateRenderView, Delaunay3D, PassArrays, GetParaViewVersion, Hide, RedistributeDataSet, Render,
     ProgrammableFilter, SaveScreenshot, Show, Sphere, TriangleStrips)
 from paraview.simple import XMLPolyDataReader  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
@@ -230,6 +235,29 @@ def check_nan_point(polydata, view, args, ranks):
         fail("a NaN point: Phong Surface covers %d pixels, Surface %d" % (covered[1], covered[0]))
 
 
+def check_data_normals(label, data, view, args, ranks):
+    """Check 8: the data's own point normals (a constant +z) drawn by default, replaced with
+    ComputeNormals "Always"."""
+    carried = Calculator(Input=data, ResultArrayName="Normals", Function="kHat")
+    carried.ResultNormals = 1
+    pictures = []
+    for mode in (0, 1, 2):  # Never, Where Missing, Always
+        display = show(carried, view, "Phong Surface")
+        display.ComputeNormals = mode
+        pictures.append(shot(view, args.out, "%s-normals-mode%d-%dranks" % (label, mode, ranks)))
+        Hide(carried, view)
+        del display
+    kept = compare(pictures[1], pictures[0])
+    replaced = compare(pictures[2], pictures[0])
+    print("%s with its own normals, %d rank(s): Where Missing against Never %.2f levels mean, "
+          "%.1f %% off; Always against Never %.2f levels mean, %.1f %% off" % (
+              label, ranks, kept[0], 100.0 * kept[1], replaced[0], 100.0 * replaced[1]))
+    if kept[2] < 1000 or kept[0] > 1.0 or kept[1] > 0.0:
+        fail("%s: the data's own normals are not the ones drawn by default" % label)
+    if replaced[0] < FACETED_LEAST[0] or replaced[1] < FACETED_LEAST[1]:
+        fail("%s: ComputeNormals Always did not replace the data's normals" % label)
+
+
 def check_against_surface(label, display, view, out, exact, ranks):
     """Checks 1 and 2 (3 for the volume): the display drawn as "Phong Surface", then as
     ParaView's "Surface", against the exact normals' picture. Returns the smooth picture."""
@@ -293,6 +321,8 @@ def main():
         for label, polydata in (("pieces", bare), ("strips", TriangleStrips(Input=bare))):
             check_polydata_seam(label, polydata, view, args, ranks, across)
         check_nan_point(bare, view, args, ranks)
+        check_data_normals("polydata", bare, view, args, ranks)
+        check_data_normals("redistributed", pieces, view, args, ranks)
     if args.from_source:
         # Delaunay3D of a source's pieces is each rank's own hull: not the sphere's volume.
         report()

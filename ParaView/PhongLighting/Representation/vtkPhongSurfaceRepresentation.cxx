@@ -1,6 +1,8 @@
 #include "vtkPhongSurfaceRepresentation.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkCommunicator.h"
+#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkGhostCellsGenerator.h"
@@ -17,8 +19,12 @@
 #include "vtkPhongProperty.h"
 #include "vtkPhongSeamFacesExchange.h"
 #include "vtkPhongSeamNormalsPatch.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkPhongSurfaceRepresentation);
 
@@ -73,7 +79,7 @@ void vtkPhongSurfaceRepresentation::SetupDefaults()
 //------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::ConnectNormals()
 {
-  if (this->ComputeNormals)
+  if (this->ComputesNormals)
   {
     // Trim and removal run whether or not the stash did: without stashed flags they only
     // pass the data on.
@@ -140,6 +146,16 @@ bool vtkPhongSurfaceRepresentation::ExchangesSeamFaces(vtkDataObject* input)
 int vtkPhongSurfaceRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // Every rank runs this on every update (the collective steps below rely on it).
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  const bool computes = this->ComputeNormals == Always ||
+    (this->ComputeNormals == WhereMissing &&
+      !vtkPhongSurfaceRepresentation::HasPointNormals(input));
+  if (computes != this->ComputesNormals)
+  {
+    this->ComputesNormals = computes;
+    this->ConnectNormals();
+  }
   const bool acrossPieces =
     this->StashesGhostCells() && vtkPhongSurfaceRepresentation::IsParallel();
   if (acrossPieces)
@@ -153,8 +169,7 @@ int vtkPhongSurfaceRepresentation::RequestData(
   // piece's points on a cut, and the ghost cells' points, come as copies (a source's own
   // pieces compute them by different sums): the normals join them. The seam mesh already
   // has the piece's own copies, and a piece's points are not joined serially either.
-  const bool seams = acrossPieces &&
-    vtkPhongSurfaceRepresentation::ExchangesSeamFaces(vtkDataObject::GetData(inputVector[0], 0));
+  const bool seams = acrossPieces && vtkPhongSurfaceRepresentation::ExchangesSeamFaces(input);
   this->SeamFaces->SetEnabled(seams);
   this->Normals->SetJoinCoincidentPoints(acrossPieces && !seams);
   this->ConfigureSeamNormals();
@@ -198,7 +213,7 @@ void vtkPhongSurfaceRepresentation::SetNormalArray(const char* name)
 void vtkPhongSurfaceRepresentation::ApplyNormalArray()
 {
   // An empty name makes the multiblock maker leave the active normals alone.
-  this->Superclass::SetNormalArray(this->ComputeNormals ? "" : this->NormalArray.c_str());
+  this->Superclass::SetNormalArray(this->ComputesNormals ? "" : this->NormalArray.c_str());
 }
 
 //------------------------------------------------------------------------------
@@ -301,16 +316,47 @@ void vtkPhongSurfaceRepresentation::SetMaximumNumberOfShaderPrograms(int count)
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongSurfaceRepresentation::SetComputeNormals(int compute)
+void vtkPhongSurfaceRepresentation::SetComputeNormals(int mode)
 {
-  if (this->ComputeNormals != (compute != 0))
+  mode = std::min(std::max(mode, static_cast<int>(Never)), static_cast<int>(Always));
+  if (this->ComputeNormals != mode)
   {
-    this->ComputeNormals = compute != 0;
-    // Only the one connection changes: SetupDefaults would also replace the mappers'
-    // block attributes (colours, visibilities) and selection.
-    this->ConnectNormals();
+    this->ComputeNormals = mode;
+    // What it means for the data is decided in RequestData, which the change causes; there
+    // only the one connection changes (SetupDefaults would also replace the mappers' block
+    // attributes, colours and visibilities, and the selection).
     this->MarkModified();
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongSurfaceRepresentation::HasPointNormals(vtkDataObject* input)
+{
+  auto carries = [](vtkDataSet* piece)
+  { return piece->GetNumberOfPoints() == 0 || piece->GetPointData()->GetNormals() != nullptr; };
+  int all = 0;
+  if (auto* piece = vtkDataSet::SafeDownCast(input))
+  {
+    all = carries(piece);
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    all = 1;
+    auto leaves = vtk::TakeSmartPointer(composite->NewIterator());
+    for (leaves->InitTraversal(); all && !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
+    {
+      auto* leaf = vtkDataSet::SafeDownCast(leaves->GetCurrentDataObject());
+      all = leaf && carries(leaf);
+    }
+  }
+  if (vtkPhongSurfaceRepresentation::IsParallel())
+  {
+    int everywhere = all;
+    vtkMultiProcessController::GetGlobalController()->AllReduce(
+      &all, &everywhere, 1, vtkCommunicator::MIN_OP);
+    all = everywhere;
+  }
+  return all != 0;
 }
 
 //------------------------------------------------------------------------------
@@ -347,7 +393,9 @@ void vtkPhongSurfaceRepresentation::SetNormalsFeatureAngle(double degrees)
 void vtkPhongSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ComputeNormals: " << (this->ComputeNormals ? "On" : "Off") << "\n";
+  static const char* const modes[] = { "Never", "WhereMissing", "Always" };
+  os << indent << "ComputeNormals: " << modes[this->ComputeNormals] << "\n";
+  os << indent << "ComputesNormals: " << (this->ComputesNormals ? "yes" : "no") << "\n";
   os << indent << "NormalsAcrossPieces: " << (this->NormalsAcrossPieces ? "On" : "Off") << "\n";
   os << indent << "NormalArray: " << (this->NormalArray.empty() ? "(none)" : this->NormalArray)
      << "\n";

@@ -10,9 +10,10 @@
  * Specular, SpecularPower, Interpolation, Opacity, block colours) keep working; the
  * properties below add vtkPhong's.
  *
- * Normals: vtkOpenMeshNormals computes them (Max weighting, 30 degree feature angle,
- * splitting on) between ParaView's geometry filter and the view, so every rank computes the
- * normals of its own piece; ComputeNormals off draws the normals the surface carries.
+ * Normals: where the data has no point normals, vtkOpenMeshNormals computes them (Max
+ * weighting, 30 degree feature angle, splitting on) between ParaView's geometry filter and
+ * the view, so every rank computes the normals of its own piece; data that carries point
+ * normals is drawn with its own, as ParaView's Surface draws it (ComputeNormals).
  * Under MPI the pieces' normals agree where pieces meet (NormalsAcrossPieces, default on):
  * the representation gives each piece ghost cells and keeps them through the geometry filter
  * (vtkPhongGhostCellsStash) until the normals are made, then drops them. Polydata pieces
@@ -120,10 +121,18 @@ public:
   void SetMaximumNumberOfShaderPrograms(int count);
 
   /**
-   * On (default): the surface's normals are computed by vtkOpenMeshNormals. Off: the normals
+   * When vtkOpenMeshNormals computes the surface's normals (ComputeNormalsModes):
+   * WhereMissing (default) unless every non-empty piece of the input, on every rank, carries
+   * point normals, which are then drawn; Always, replacing the data's; Never: the normals
    * the surface carries are drawn (none: faceted, as ParaView's Surface representation).
    */
-  void SetComputeNormals(int compute);
+  enum ComputeNormalsModes
+  {
+    Never = 0,
+    WhereMissing = 1,
+    Always = 2
+  };
+  void SetComputeNormals(int mode);
 
   /**
    * The normals' vertex weighting: 0 uniform, 1 area, 2 angle, 3 Max (default), as
@@ -134,7 +143,7 @@ public:
 
   /**
    * ParaView's "Normal Array" choice (SelectNormalArray), remembered and applied only while
-   * ComputeNormals is off: with it on, the computed normals are the ones drawn. ParaView
+   * the data's normals are drawn: otherwise the computed normals are the ones drawn. ParaView
    * sets "None" when the input has no normals array, and ParaView 5.11 passes that name on
    * to SetActiveNormals, which would switch the computed normals off again.
    */
@@ -144,7 +153,7 @@ public:
    * On (default): under MPI, make one level of ghost cells and compute each piece's
    * normals with its neighbours' faces, so that pieces meet without a seam. Off: each
    * piece's normals see that piece only (no ghost exchange; a seam where pieces meet).
-   * Only matters while ComputeNormals is on.
+   * Only matters while normals are computed.
    */
   void SetNormalsAcrossPieces(int across);
 
@@ -161,7 +170,7 @@ protected:
 
   /**
    * The superclass' pipeline, with the ghost trim, vtkOpenMeshNormals and the ghost removal
-   * between the geometry filter and the multiblock maker when ComputeNormals is on.
+   * between the geometry filter and the multiblock maker while normals are computed.
    */
   void SetupDefaults() override;
 
@@ -181,21 +190,28 @@ protected:
   static bool ExchangesSeamFaces(vtkDataObject* input);
 
   /**
-   * The superclass' RequestData. It forwards the input's whole extent to the internal
-   * input's producer only when it gets that producer's port, which it does not while the
-   * stash is in between: forward it here first.
+   * The superclass' RequestData, after deciding whether to compute normals (ComputeNormals;
+   * collective under MPI). It forwards the input's whole extent to the internal input's
+   * producer only when it gets that producer's port, which it does not while the stash is in
+   * between: forward it here first.
    */
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
   /**
-   * Whether the ghost-cell stash is in the pipeline (ComputeNormals and NormalsAcrossPieces).
+   * Whether every non-empty piece of `input` (a data set, or the leaves of composite data)
+   * carries point normals, on every rank (collective when IsParallel).
    */
-  bool StashesGhostCells() const { return this->ComputeNormals && this->NormalsAcrossPieces; }
+  static bool HasPointNormals(vtkDataObject* input);
+
+  /**
+   * Whether the ghost-cell stash is in the pipeline (normals computed, NormalsAcrossPieces).
+   */
+  bool StashesGhostCells() const { return this->ComputesNormals && this->NormalsAcrossPieces; }
 
   /**
    * Feed the multiblock maker through the ghost trim, the normals and the ghost removal
-   * (ComputeNormals on), then the seam patch (PatchesSeams: polydata under MPI), or
+   * (ComputesNormals), then the seam patch (PatchesSeams: polydata under MPI), or
    * straight from the geometry filter.
    */
   void ConnectNormals();
@@ -207,11 +223,12 @@ protected:
 
   /**
    * Tell the superclass which normals to draw: none named (the computed ones stay active)
-   * while ComputeNormals is on, the user's NormalArray otherwise.
+   * while normals are computed, the user's NormalArray otherwise.
    */
   void ApplyNormalArray();
 
-  bool ComputeNormals = true;
+  int ComputeNormals = WhereMissing;
+  bool ComputesNormals = true; // what ComputeNormals decided for the current input
   bool NormalsAcrossPieces = true;
   std::string NormalArray;
   vtkNew<vtkGhostCellsGenerator> GhostCells;
