@@ -85,8 +85,8 @@ std::uint64_t Mix(std::uint64_t x)
 // How many indices the hashed sums read from the index buffer at a time (3 MB).
 constexpr size_t IndicesPerBlock = size_t(3) << 18;
 
-// A position's hash, by its bits as the welding compares them (-0 made 0 first); 0 for one
-// that is not finite.
+// A position's hash, by its bits as the welding compares them (-0 made 0 first), each
+// coordinate's times an odd constant of its own, mixed once; 0 for one that is not finite.
 template <typename Position>
 std::uint64_t PositionHash(const Position& x)
 {
@@ -94,26 +94,30 @@ std::uint64_t PositionHash(const Position& x)
   {
     return 0;
   }
+  static const std::uint64_t odd[3] = { 0x9e3779b97f4a7c15ull, 0xc2b2ae3d27d4eb4full,
+    0x165667b19e3779f9ull };
   std::uint64_t h = 0x243f6a8885a308d3ull;
   for (int axis = 0; axis < 3; ++axis)
   {
     const double zeroed = static_cast<double>(x[axis]) + 0.0; // -0 and +0: one position
     std::uint64_t bits;
     std::memcpy(&bits, &zeroed, sizeof(bits));
-    h = Mix(h ^ bits);
+    h ^= bits * odd[axis];
   }
+  h = Mix(h);
   return h != 0 ? h : 1;
 }
 
 // A closed, consistently oriented surface uses each edge once in each direction, so over all
 // its directed edges (a, b) the sum of f(a, b) - f(b, a) is exactly 0 (modulo 2^64) for any
-// f of the two corners. With f(a, b) = h(a) Mix(h(b)), h a hash of a point, an open surface
-// leaves its boundary loops, whose sum is not 0 but with a chance of 2^-64: a sum not 0 means
-// open (or inconsistent) for certain, in one pass and no memory, before the exact check
-// (IsClosedAndConsistent). h hashes the point's id (closed by ids) or its position (closed
-// once the points at one position are one). Degenerate triangles cancel themselves. The sum
-// goes over blocks of indices. A corner hashed 0, or an index that names no point (the rest
-// of the analysis reads every corner's position), rules the surface out.
+// f of the two corners. With f(a, b) = h(a) g(h(b)), h a hash of a point and g a rotation
+// (not a multiple: f must not be symmetric), an open surface leaves its boundary loops,
+// whose sum is not 0 but with a chance of 2^-64: a sum not 0 means open (or inconsistent)
+// for certain, in one pass and no memory, before the exact check (IsClosedAndConsistent). h hashes
+// the point's id (closed by ids) or its position (closed once the points at one position are one).
+// Degenerate triangles cancel themselves. The sum goes over blocks of indices. A corner hashed 0,
+// or an index that names no point (the rest of the analysis reads every corner's position), rules
+// the surface out.
 class EdgeSums
 {
 public:
@@ -141,7 +145,7 @@ private:
       {
         h[k] = indices[i + k] < points ? hash(indices[i + k]) : 0;
         this->Valid = this->Valid && h[k] != 0;
-        g[k] = Mix(h[k] ^ 0x9e3779b97f4a7c15ull);
+        g[k] = ((h[k] << 29) | (h[k] >> 35)) ^ 0x9e3779b97f4a7c15ull;
       }
       for (int k = 0; k < 3; ++k)
       {
