@@ -16,8 +16,9 @@
  *   direction, by the points' ids or else with the points at one position taken as one
  *   (split normals and per-face points duplicate them; a triangle with two corners at one
  *   point, which covers no pixel, is then left out). A corner that is not finite rules
- *   culling out. A hashed sum over the edges tells most open surfaces in one pass; the exact
- *   check goes through the edges a range of points at a time, in at most 64 MB.
+ *   culling out. Hashed sums over the edges, by ids and then by positions, tell most open
+ *   surfaces in a pass each; the exact check goes through the edges a range of points at a
+ *   time, in at most 64 MB.
  * - The surfaces bound a solid, never its inside-out: the largest connected surface's
  *   volume gives the orientation (outward, the usual, or inward), and every surface
  *   enclosing a volume of the other sign (a cavity: a contour around a minimum, a hollow
