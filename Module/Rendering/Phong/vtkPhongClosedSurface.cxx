@@ -308,7 +308,9 @@ void vtkPhongClosedSurface::Update(vtkOpenGLIndexBufferObject* triangles,
   }
   if (indices.size() / 3 >= vtkPhongBackgroundTask::LargeTriangles)
   {
-    this->AnalyseInBackground(std::move(indices), points, closure);
+    // Points merges several blocks into a polydata of its own, which the thread may keep.
+    const bool merged = points.GetPointer() != blocks.front().Data;
+    this->AnalyseInBackground(std::move(indices), points, closure, merged);
     return;
   }
   this->Orientation = Analyse(indices, points, closure);
@@ -322,10 +324,12 @@ bool vtkPhongClosedSurface::IsAnalysing() const
 
 //------------------------------------------------------------------------------
 // The thread works on its own copies: the input's points may change, or go, meanwhile.
+// `owned`: the input is already a copy no one else holds.
 void vtkPhongClosedSurface::AnalyseInBackground(
-  std::vector<unsigned int> indices, vtkPolyData* input, Closure closure)
+  std::vector<unsigned int> indices, vtkPolyData* input, Closure closure, bool owned)
 {
-  vtkSmartPointer<vtkPolyData> copy = vtkPhongBufferBlocks::CopyOfPoints(input);
+  vtkSmartPointer<vtkPolyData> copy =
+    owned ? vtkSmartPointer<vtkPolyData>(input) : vtkPhongBufferBlocks::CopyOfPoints(input);
   this->Pending = std::make_unique<Background>();
   Background* pending = this->Pending.get();
   pending->Task = std::make_unique<vtkPhongBackgroundTask>(

@@ -126,7 +126,8 @@ private:
   static bool HasOnlyFinitePoints(vtkPolyData* input);
   static bool MayBeClosedAtPositions(const std::vector<unsigned int>& indices, vtkPolyData* input);
   static int Analyse(std::vector<unsigned int>& indices, vtkPolyData* input, Closure closure);
-  void AnalyseInBackground(std::vector<unsigned int> indices, vtkPolyData* input, Closure closure);
+  void AnalyseInBackground(
+    std::vector<unsigned int> indices, vtkPolyData* input, Closure closure, bool owned);
   void CollectBackground(bool wait);
   static bool HasConcavePolygons(vtkPolyData* input);
   static std::vector<std::uint32_t> WeldPoints(vtkPolyData* input);
