@@ -113,11 +113,11 @@ std::uint64_t PositionHash(const Position& x)
 // f of the two corners. With f(a, b) = h(a) g(h(b)), h a hash of a point and g a rotation
 // (not a multiple: f must not be symmetric), an open surface leaves its boundary loops,
 // whose sum is not 0 but with a chance of 2^-64: a sum not 0 means open (or inconsistent)
-// for certain, in one pass and no memory, before the exact check (IsClosedAndConsistent). h hashes
-// the point's id (closed by ids) or its position (closed once the points at one position are one).
-// Degenerate triangles cancel themselves. The sum goes over blocks of indices. A corner hashed 0,
-// or an index that names no point (the rest of the analysis reads every corner's position), rules
-// the surface out.
+// for certain, in one pass and no memory, before the exact check (IsClosedAndConsistent).
+// h hashes the point's id (closed by ids) or its position (closed once the points at one
+// position are one). Degenerate triangles cancel themselves. The sum goes over blocks of
+// indices. A corner hashed 0, or an index that names no point (the rest of the analysis
+// reads every corner's position), rules the surface out.
 class EdgeSums
 {
 public:
@@ -358,8 +358,7 @@ void vtkPhongClosedSurface::CollectBackground(bool wait)
 vtkPhongClosedSurface::Closure vtkPhongClosedSurface::MayBeClosed(
   vtkOpenGLIndexBufferObject* triangles, vtkPolyData* input)
 {
-  const size_t count = triangles->IndexCount;
-  if (count == 0 || count % 3 != 0 || !triangles->GetHandle())
+  if (!vtkPhongVisibleClusters::HoldsTriangles(triangles))
   {
     return Closure::None;
   }

@@ -147,14 +147,20 @@ void vtkPhongVisibleClusters::CollectBackground()
 bool vtkPhongVisibleClusters::ReadIndices(
   vtkOpenGLIndexBufferObject* triangles, std::vector<unsigned int>& indices)
 {
-  const size_t count = triangles->IndexCount;
-  if (count == 0 || count % 3 != 0 || !triangles->GetHandle())
+  if (!HoldsTriangles(triangles))
   {
     return false;
   }
-  indices.resize(count);
+  indices.resize(triangles->IndexCount);
   ReadIndices(triangles, 0, indices);
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongVisibleClusters::HoldsTriangles(vtkOpenGLIndexBufferObject* triangles)
+{
+  const size_t count = triangles->IndexCount;
+  return count > 0 && count % 3 == 0 && triangles->GetHandle();
 }
 
 //------------------------------------------------------------------------------

@@ -117,6 +117,12 @@ public:
     vtkOpenGLIndexBufferObject* triangles, std::vector<unsigned int>& indices);
 
   /**
+   * Whether VTK's triangle index buffer holds whole triangles to read (ReadIndices is false
+   * where it does not).
+   */
+  static bool HoldsTriangles(vtkOpenGLIndexBufferObject* triangles);
+
+  /**
    * `indices.size()` of those indices from the `first` on, which the buffer holds: a block
    * of them, for a pass that needs no copy of all.
    */
