@@ -103,8 +103,9 @@ vtkPhongErrorBudget::Mode vtkPhongErrorBudget::ChooseMode(vtkRenderer* ren, vtkA
   {
     return Mode::PerFragment;
   }
-  const vtkPhongGouraudBound::Bounds bounds = triangles.Bound(scene);
   const double share = available - FloatMargin(scene);
+  // No mode takes a bound above the share: the bound may stop once both modes pass it.
+  const vtkPhongGouraudBound::Bounds bounds = triangles.Bound(scene, share);
   // A mode at least as cheap as the last one must fit within 0.8 of the share to be taken,
   // within all of it to be kept.
   const auto fits = [&](double modeBound, Mode mode)

@@ -104,51 +104,83 @@ Vector CellCentre(std::size_t index)
   return centre;
 }
 
-// sup over alpha in [a, b] of cos(alpha)^p sin(alpha)^q, p real, q in {1, 2}: unimodal on
-// [0, pi/2] with its peak where tan^2(alpha) = q / p (increasing when p <= 0).
-double SupCosSin(double p, int q, double a, double b)
-{
-  double alpha = b;
-  if (p > 0.0)
-  {
-    alpha = std::min(std::max(std::atan(std::sqrt(q / p)), a), b);
-  }
-  else if (b >= HalfPi - 1.0e-12 && p < 0.0)
-  {
-    return Infinite; // cos^p grows without bound at the lobe's edge
-  }
-  return std::pow(std::cos(alpha), p) * std::pow(std::sin(alpha), q);
-}
 }
 
 //------------------------------------------------------------------------------
 double vtkPhongGouraudBound::LobeBound(double spread, double nearAngle, double farAngle, double n)
 {
-  return LobeBound(Cap(spread), nearAngle, farAngle, n);
+  const Exponent exponent(n);
+  return LobeBound(Cap(spread), NearAngle(std::max(nearAngle, 0.0), exponent), farAngle, exponent);
 }
 
 //------------------------------------------------------------------------------
+// tan(R)^2 / 2, (1 - cos R cos 2R) / sin R = sin R (1 / (1 + cos R) + 2 cos R) (without the
+// cancellation of the first form at small R) and sin(R) / 2, from one sine and cosine.
 vtkPhongGouraudBound::Cap::Cap(double spread)
   : Spread(spread)
 {
   if (spread > 0.0 && spread < 0.25 * Pi)
   {
-    const double tangent = std::tan(spread);
-    this->HalfTangent2 = 0.5 * tangent * tangent;
-    this->Radial = (1.0 - std::cos(spread) * std::cos(2.0 * spread)) / std::sin(spread);
-    this->Kink = 0.5 * std::sin(spread);
+    const double c = std::cos(spread), s = std::sin(spread);
+    this->HalfTangent2 = 0.5 * (s * s) / (c * c);
+    this->Radial = s * (1.0 / (1.0 + c) + 2.0 * c);
+    this->Kink = 0.5 * s;
   }
 }
 
 //------------------------------------------------------------------------------
-double vtkPhongGouraudBound::LobeBound(const Cap& cap, double nearAngle, double farAngle, double n)
+// The peaks of cos^p sin^q (p = n - q) inside [0, pi/2], where tan^2 = q / p: cos^2 = p/(p+q).
+vtkPhongGouraudBound::Exponent::Exponent(double n)
+  : N(n)
+  , Cut(n > 0.0 ? std::acos(std::pow(NegligibleLobe, 1.0 / n)) : Infinite)
+  , CosCut(n > 0.0 ? std::cos(Cut) : -1.0)
+  , SinCut(n > 0.0 ? std::sin(Cut) : 0.0)
+  , Whole(n >= 1.0 && n <= 65536.0 && n == std::floor(n) ? static_cast<unsigned int>(n) : 0)
 {
+  const auto peak = [n](double q, double& angle)
+  {
+    const double p = n - q;
+    angle = p > 0.0 ? std::atan(std::sqrt(q / p)) : HalfPi;
+    return p > 0.0 ? std::pow(p / (p + q), 0.5 * p) * std::pow(q / (p + q), 0.5 * q) : 0.0;
+  };
+  this->CurvaturePeak = peak(2.0, this->CurvaturePeakAngle);
+  this->SlopePeak = peak(1.0, this->SlopePeakAngle);
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongGouraudBound::Exponent::Power(double x) const
+{
+  if (this->Whole == 0 && this->N != 0.0)
+  {
+    return std::pow(x, this->N);
+  }
+  double power = 1.0;
+  for (unsigned int k = this->Whole; k != 0; k >>= 1, x *= x)
+  {
+    power = (k & 1) ? power * x : power;
+  }
+  return power;
+}
+
+//------------------------------------------------------------------------------
+vtkPhongGouraudBound::NearAngle::NearAngle(double angle, const Exponent& exponent)
+  : Value(angle)
+  , Cos(std::cos(angle))
+  , Sin(std::sin(angle))
+  , CosN(angle >= HalfPi ? 0.0 : exponent.Power(Cos))
+{
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongGouraudBound::LobeBound(
+  const Cap& cap, const NearAngle& a, double farAngle, const Exponent& exponent)
+{
+  const double n = exponent.N;
   if (!(cap.Spread > 0.0) || n == 0.0)
   {
     return 0.0; // equal normals, or a lobe that is 1 wherever it is gated on
   }
-  const double a = std::max(nearAngle, 0.0), b = std::min(farAngle, HalfPi);
-  if (a >= HalfPi)
+  if (a.Value >= HalfPi)
   {
     return 0.0; // the lobe is 0 over the whole cap
   }
@@ -159,12 +191,37 @@ double vtkPhongGouraudBound::LobeBound(const Cap& cap, double nearAngle, double 
   {
     return Infinite;
   }
+  // sup over alpha in [a, b] of cos^p sin^q, p = n - q, q in {1, 2}: unimodal on [0, pi/2],
+  // its peak where tan^2 = q / p (increasing when p <= 0, the peak then pi/2): at a past the
+  // peak, the peak's value (made once per exponent) around it, at b before it.
+  const double b = std::min(farAngle, HalfPi);
+  const auto sup = [&](int q, double peak, double peakAngle)
+  {
+    const double p = n - q;
+    const auto sinPower = [q](double sine) { return q == 2 ? sine * sine : sine; };
+    if (p > 0.0 && a.Value >= peakAngle)
+    {
+      const double cosQ = sinPower(a.Cos); // cos^p = cos^n / cos^q, cos(a) > 0 here
+      return (cosQ > 1.0e-100 ? a.CosN / cosQ : std::pow(a.Cos, p)) * sinPower(a.Sin);
+    }
+    if (p > 0.0 && b > peakAngle)
+    {
+      return peak;
+    }
+    if (p < 0.0 && b >= HalfPi - 1.0e-12)
+    {
+      return Infinite; // cos^p grows without bound at the lobe's edge
+    }
+    return std::pow(std::cos(b), p) * sinPower(std::sin(b));
+  };
   // d2/dalpha2 cos^n = n(n-1) cos^(n-2) sin^2 - n cos^n; s'(c) c = n cos^n;
   // s'(c) sin = n cos^(n-1) sin.
   const double curvature = n * std::abs(n - 1.0); // 0 for the diffuse term's n = 1
-  const double hs = (curvature > 0.0 ? curvature * SupCosSin(n - 2.0, 2, a, b) : 0.0) +
-    n * std::pow(std::cos(a), n);
-  const double g1 = n * SupCosSin(n - 1.0, 1, a, b);
+  const double hs =
+    (curvature > 0.0 ? curvature * sup(2, exponent.CurvaturePeak, exponent.CurvaturePeakAngle)
+                     : 0.0) +
+    n * a.CosN;
+  const double g1 = n * sup(1, exponent.SlopePeak, exponent.SlopePeakAngle);
   return cap.HalfTangent2 * (hs + 2.0 * g1 * cap.Radial) + (kink ? cap.Kink : 0.0);
 }
 
@@ -218,6 +275,9 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
       cell.Centre[k] = 0.5 * (cell.Low[k] + cell.High[k]);
     }
     cell.Reach = 0.5 * Norm(diagonal);
+    cell.Normals = Cap(cell.Spread);
+    cell.CosWidth = std::cos(cell.Cone + cell.Spread);
+    cell.SinWidth = std::sin(cell.Cone + cell.Spread);
   }
   if (this->Unbounded)
   {
@@ -295,18 +355,19 @@ bool vtkPhongGouraudBound::Scene::operator==(const Scene& other) const
 }
 
 //------------------------------------------------------------------------------
-vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Bound(const Scene& scene)
+vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Bound(const Scene& scene, double limit)
 {
-  if (this->LastBounds.PerVertex < 0.0 || !(scene == this->LastScene))
+  if (this->LastBounds.PerVertex < 0.0 || !(scene == this->LastScene) || limit != this->LastLimit)
   {
     this->LastScene = scene;
-    this->LastBounds = this->Compute(scene);
+    this->LastLimit = limit;
+    this->LastBounds = this->Compute(scene, limit);
   }
   return this->LastBounds;
 }
 
 //------------------------------------------------------------------------------
-vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene) const
+vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene, double limit) const
 {
   Bounds largest = { Infinite, Infinite };
   if (this->Unbounded || this->Triangles == 0)
@@ -314,9 +375,7 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene) c
     return largest;
   }
   largest = { 0.0, 0.0 };
-  // The angle from the lobe's axis beyond which cos^n is below NegligibleLobe.
-  const double lobeCut =
-    scene.Shininess > 0.0 ? std::acos(std::pow(NegligibleLobe, 1.0 / scene.Shininess)) : Infinite;
+  const Exponent exponent(scene.Shininess);
   std::vector<Halfway> halfways(scene.Lights.size());
   bool halfwaysMade = false;
   for (const Cell& cell : this->Cells)
@@ -330,7 +389,6 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene) c
     {
       return { Infinite, Infinite };
     }
-    view.LobeCut = lobeCut;
     // In parallel projection the view, and so the halfway vectors, are the same for every cell.
     if (!scene.Parallel || !halfwaysMade)
     {
@@ -340,9 +398,13 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene) c
         halfways[i] = MakeHalfway(scene, view, scene.Lights[i].ToLightMC);
       }
     }
-    const Bounds bounds = CellBound(cell, scene, view, halfways);
+    const Bounds bounds = CellBound(cell, scene, exponent, view, halfways);
     largest.PerVertex = std::max(largest.PerVertex, bounds.PerVertex);
     largest.SpecularPerVertex = std::max(largest.SpecularPerVertex, bounds.SpecularPerVertex);
+    if (largest.SpecularPerVertex > limit) // and so PerVertex, which adds the diffuse terms
+    {
+      break;
+    }
   }
   return largest;
 }
@@ -395,9 +457,11 @@ bool vtkPhongGouraudBound::MakeView(const Scene& scene, const Cell& cell, View& 
   {
     return false; // the eye inside or at the cell's ball: V takes every direction
   }
-  view.Spread = std::asin(radius / distance);
-  view.CosHalfSpread = std::cos(0.5 * view.Spread);
-  view.SinHalfSpread = std::sin(0.5 * view.Spread);
+  // The half angle's cosine and sine from the angle's, which radius / distance gives.
+  const double sinSpread = radius / distance;
+  view.Spread = std::asin(sinSpread);
+  view.CosHalfSpread = std::sqrt(0.5 * (1.0 + std::sqrt(1.0 - sinSpread * sinSpread)));
+  view.SinHalfSpread = sinSpread / (2.0 * view.CosHalfSpread);
   view.Nearest = distance - radius;
   return true;
 }
@@ -406,17 +470,16 @@ bool vtkPhongGouraudBound::MakeView(const Scene& scene, const Cell& cell, View& 
 // Every triangle of the cell, on each side (as is; reversed: two-sided back faces). The
 // angles between the light and the cell's normals, [toLight - width, toLight + width], go by
 // their cosines and sines (no arctangent per light and cell: this runs per frame).
-vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(
-  const Cell& cell, const Scene& scene, const View& view, const std::vector<Halfway>& halfways)
+vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, const Scene& scene,
+  const Exponent& exponent, const View& view, const std::vector<Halfway>& halfways)
 {
-  const double width = cell.Cone + cell.Spread; // normals' angles around d
-  const double cosWidth = std::cos(width), sinWidth = std::sin(width);
-  const bool wide = width >= HalfPi;
+  const double cosWidth = cell.CosWidth, sinWidth = cell.SinWidth; // the normals' around d
+  const bool wide = cell.Cone + cell.Spread >= HalfPi;
   // The view vector's spread over one triangle (0 in parallel projection).
   const double localView = scene.Parallel ? 0.0
     : cell.Radius < view.Nearest          ? std::asin(cell.Radius / view.Nearest)
                                           : Infinite;
-  const Cap normals(cell.Spread);
+  const Cap& normals = cell.Normals;
   const double cosGateOpen = std::sin(1.0e-3); // cos(pi/2 - 1e-3)
   Bounds largest = { 0.0, 0.0 };
   for (double side : { 1.0, -1.0 })
@@ -445,8 +508,8 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(
       if (light.Specular > 0.0)
       {
         specular += light.Specular *
-          SpecularBound(
-            cell, scene, view, d, light.ToLightMC, halfways[i], localView, cosFar <= cosGateOpen);
+          SpecularBound(cell, scene, exponent, view, d, light.ToLightMC, halfways[i], localView,
+            cosFar <= cosGateOpen);
       }
     }
     // NaN, from a degenerate input, bounds nothing.
@@ -477,14 +540,13 @@ double vtkPhongGouraudBound::DiffuseBound(
 }
 
 //------------------------------------------------------------------------------
-double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene, const View& view,
-  const Vector& d, const Vector& toLight, const Halfway& halfway, double localView,
-  bool gateCrosses)
+double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
+  const Exponent& exponent, const View& view, const Vector& d, const Vector& toLight,
+  const Halfway& halfway, double localView, bool gateCrosses)
 {
   // The lobe's axis against the cell's normals: Blinn's H against N, or Phong's reflected
   // vector (which turns twice as far as N) against V.
   double centre, width, spread, scale = 1.0;
-  const double n = scene.Shininess;
   // The lobe's axis, and the direction its angle is measured from.
   Vector axis = halfway.Direction, from = d;
   if (scene.Blinn)
@@ -505,8 +567,11 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
     width = 2.0 * (cell.Cone + cell.Spread) + view.Spread;
     spread = 2.0 * cell.Spread + localView;
   }
-  // Most cells lie beyond the lobe: told by a cosine, before any angle is taken.
-  if (view.LobeCut + width < Pi && Dot(from, axis) <= std::cos(view.LobeCut + width))
+  // Most cells lie beyond the lobe: told by a cosine, before any angle is taken. With
+  // Cut <= pi/2, cos(Cut + width) >= cos(Cut) (1 - width^2 / 2) - sin(Cut) width, which needs
+  // no cosine per light and cell; a cell it misses is told by the angle below.
+  if (exponent.Cut + width < Pi &&
+    Dot(from, axis) <= exponent.CosCut * (1.0 - 0.5 * width * width) - exponent.SinCut * width)
   {
     return NegligibleLobe;
   }
@@ -518,15 +583,16 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   const double nearLobe = std::max(centre - width, 0.0);
   // Where the lobe is below 1e-7 of the light over the whole cell (most cells, for all but the
   // widest lobes), that bounds it: no power and no lobe bound.
-  if (nearLobe >= view.LobeCut)
+  if (nearLobe >= exponent.Cut)
   {
     return NegligibleLobe;
   }
-  const double largest = nearLobe >= HalfPi ? 0.0 : std::pow(std::cos(nearLobe), n);
+  const NearAngle a(nearLobe, exponent);
+  const double largest = a.CosN;
   // The gate (N.L > 1e-4) or the smooth terminator crossing the cell: only the largest value.
   if (scene.SmoothTerminator || gateCrosses)
   {
     return largest;
   }
-  return std::min(largest, scale * LobeBound(spread, nearLobe, centre + width, n));
+  return std::min(largest, scale * LobeBound(Cap(spread), a, centre + width, exponent));
 }

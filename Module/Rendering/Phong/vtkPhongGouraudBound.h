@@ -41,6 +41,7 @@
 #include "vtkType.h"                 // for vtkMTimeType
 
 #include <array>  // for std::array
+#include <cmath>  // for HUGE_VAL
 #include <vector> // for std::vector
 
 class vtkDataArray;
@@ -88,9 +89,11 @@ public:
   /**
    * The largest difference per pixel and channel (linear colour) between per-vertex and
    * per-fragment lighting of the binned triangles in `scene`, for both per-vertex modes.
-   * The scene of the last call is remembered: a still view costs nothing.
+   * Once both exceed `limit` (the most a caller could accept) the cells left are skipped:
+   * a bound above `limit` may then be less than the largest difference, though still above
+   * `limit`. The scene and limit of the last call are remembered: a still view costs nothing.
    */
-  Bounds Bound(const Scene& scene);
+  Bounds Bound(const Scene& scene, double limit = HUGE_VAL);
 
   /**
    * The bound E above for one cap: `spread` its angular radius, [near, far] the range of
@@ -121,6 +124,12 @@ public:
 private:
   using Vector = std::array<double, 3>;
   static constexpr double Huge = 1.0e300;
+  /// The terms of LobeBound that depend on the cap's radius alone, made once per cap.
+  struct Cap
+  {
+    explicit Cap(double spread = 0.0);
+    double Spread, HalfTangent2 = 0.0, Radial = 0.0, Kink = 0.0;
+  };
   struct Cell
   {
     Vector Axis = { { 0.0, 0.0, 0.0 } }; ///< the cell's centre direction
@@ -133,6 +142,9 @@ private:
     Vector Low = { { Huge, Huge, Huge } }, High = { { -Huge, -Huge, -Huge } }; ///< points' box
     Vector Centre = { { 0.0, 0.0, 0.0 } }; ///< of the ball holding its points (from the box)
     double Reach = 0.0;                    ///< that ball's radius
+    // Made once binning ends, since the bound needs them every frame:
+    Cap Normals;                           ///< the cap of the largest radius, Spread
+    double CosWidth = 1.0, SinWidth = 0.0; ///< of Cone + Spread, the normals' angles around Axis
   };
   /// The view vector over the whole surface: a cone, and the eye's least distance.
   struct View
@@ -140,7 +152,6 @@ private:
     Vector Centre = { { 0.0, 0.0, 1.0 } };
     double Spread = 0.0;
     double Nearest = 0.0;
-    double LobeCut = 0.0; ///< the angle from the lobe's axis past which it is negligible
     double CosHalfSpread = 1.0, SinHalfSpread = 0.0; ///< of Spread / 2
   };
   /// Blinn's halfway vector for one light over the view cone (unused for Phong).
@@ -153,19 +164,36 @@ private:
   };
   static bool MakeView(const Scene& scene, const Cell& cell, View& view);
   static Halfway MakeHalfway(const Scene& scene, const View& view, const Vector& toLight);
-  static Bounds CellBound(
-    const Cell& cell, const Scene& scene, const View& view, const std::vector<Halfway>& halfways);
-  /// The terms of LobeBound that depend on the cap's radius alone, made once per cell.
-  struct Cap
+  /// The lobe's exponent n, and what depends on it alone: made once per bound.
+  struct Exponent
   {
-    explicit Cap(double spread);
-    double Spread, HalfTangent2 = 0.0, Radial = 0.0, Kink = 0.0;
+    explicit Exponent(double n);
+    double N;
+    double Cut = 0.0; ///< the angle from the lobe's axis past which it is negligible
+    double CosCut = -1.0, SinCut = 0.0; ///< of Cut, where it is at most pi/2
+    /// sup of cos^p sin^q at its interior peak (tan^2 = q/p), and that angle, for p = n - 2,
+    /// q = 2 and p = n - 1, q = 1 (0 and pi/2 where p <= 0: no interior peak).
+    double CurvaturePeak = 0.0, SlopePeak = 0.0;
+    double CurvaturePeakAngle = 0.0, SlopePeakAngle = 0.0;
+    /// n where it is a whole number up to 2^16, else 0: its powers by squaring (a few
+    /// products, within a few ulps) instead of std::pow.
+    unsigned int Whole = 0;
+    double Power(double x) const; ///< x^n, x in [0, 1]
   };
-  static double LobeBound(const Cap& cap, double nearAngle, double farAngle, double n);
+  /// The near angle of a lobe bound, in [0, pi/2), with its cosine, sine and cos^n.
+  struct NearAngle
+  {
+    NearAngle(double angle, const Exponent& exponent);
+    double Value, Cos, Sin, CosN;
+  };
+  static Bounds CellBound(const Cell& cell, const Scene& scene, const Exponent& exponent,
+    const View& view, const std::vector<Halfway>& halfways);
+  static double LobeBound(
+    const Cap& cap, const NearAngle& nearAngle, double farAngle, const Exponent& exponent);
   static double DiffuseBound(const Cap& normals, double cosNear, double sinFar, bool terminator);
-  static double SpecularBound(const Cell& cell, const Scene& scene, const View& view,
-    const Vector& d, const Vector& toLight, const Halfway& halfway, double localView,
-    bool gateCrosses);
+  static double SpecularBound(const Cell& cell, const Scene& scene, const Exponent& exponent,
+    const View& view, const Vector& d, const Vector& toLight, const Halfway& halfway,
+    double localView, bool gateCrosses);
   void AddPolygon(vtkIdType count, const vtkIdType* ids, vtkPoints* points, vtkDataArray* normals);
 
   std::vector<Cell> Cells;
@@ -173,9 +201,10 @@ private:
   std::size_t Triangles = 0;
   std::size_t Points = 0;
   bool Unbounded = true;
-  Scene LastScene;                    ///< Bound's last scene, and its bounds
+  Scene LastScene; ///< Bound's last scene and limit, and its bounds
+  double LastLimit = 0.0;
   Bounds LastBounds = { -1.0, -1.0 }; ///< negative: none yet since Update
-  Bounds Compute(const Scene& scene) const;
+  Bounds Compute(const Scene& scene, double limit) const;
   vtkMTimeType BuildTime = 0;
 };
 

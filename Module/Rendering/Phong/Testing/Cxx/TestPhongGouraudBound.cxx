@@ -280,8 +280,19 @@ bool CheckScene(vtkPolyData* mesh, vtkPhongGouraudBound& bound, const Scene& sce
     return true;
   }
   ++bounded;
-  const vtkPhongGouraudBound::Bounds actual = BruteForce(mesh, scene);
   bool ok = true;
+  // Limited between the two modes, as the planner limits it, the bound stops no earlier than
+  // the mode within the limit allows: that mode keeps its whole bound.
+  const double middle = 0.5 * (limit.SpecularPerVertex + limit.PerVertex);
+  const vtkPhongGouraudBound::Bounds limited = bound.Bound(scene, middle);
+  if (limit.SpecularPerVertex < middle &&
+    (limited.SpecularPerVertex != limit.SpecularPerVertex || !(limited.PerVertex > middle)))
+  {
+    std::cerr << "limited at " << middle << ": " << name << " specular per vertex "
+              << limited.SpecularPerVertex << " against " << limit.SpecularPerVertex << "\n";
+    ok = false;
+  }
+  const vtkPhongGouraudBound::Bounds actual = BruteForce(mesh, scene);
   for (int mode = 0; mode < 2; ++mode)
   {
     const double a = mode == 0 ? actual.PerVertex : actual.SpecularPerVertex;
@@ -442,6 +453,19 @@ int TestPhongGouraudBound(int argc, char* argv[])
     {
       std::cerr << "remembered bounds: " << a.PerVertex << ", " << b.PerVertex << ", "
                 << c.PerVertex << "\n";
+      ok = false;
+    }
+    // Under a limit both modes pass, the bound may stop early but stays above the limit;
+    // the limit is part of what is remembered.
+    const double low = 0.5 * a.SpecularPerVertex;
+    const auto cut = bound.Bound(first, low);
+    const auto unlimited = bound.Bound(first);
+    if (!(a.SpecularPerVertex > 0.0) || !(cut.SpecularPerVertex > low) || !(cut.PerVertex > low) ||
+      unlimited.PerVertex != a.PerVertex)
+    {
+      std::cerr << "limited bounds: " << cut.SpecularPerVertex << ", " << cut.PerVertex
+                << " against " << low << "; " << unlimited.PerVertex << " against " << a.PerVertex
+                << "\n";
       ok = false;
     }
   }
