@@ -234,3 +234,55 @@ bool vtkPhongErrorBudget::PerVertexIsCheaper(
     2.0 * static_cast<double>(triangles.GetNumberOfPoints()) * (twoSided ? 2.0 : 1.0);
   return vertexWork <= fragments;
 }
+
+//------------------------------------------------------------------------------
+double vtkPhongErrorBudget::WholePowerError(const vtkPhongShaderPlan& plan, int n)
+{
+  if (n < 1)
+  {
+    return 0.0;
+  }
+  int products = 1;
+  for (int k = n; k > 1; k >>= 1)
+  {
+    products += 2; // a squaring, and at most one product into the power
+  }
+  const double u = std::ldexp(1.0, -24);
+  const double gamma = products * u / (1.0 - products * u);
+  double weights[3][3];
+  vtkPhongLightCulling::MaterialWeights(plan.FrontMaterial, plan.BackMaterial, weights);
+  double ceiling = 0.0;
+  const auto add = [&](vtkLight* light, bool positional)
+  {
+    // A(d) = 1 / max(c + l d + q d^2, 1e-20) <= 1 / c for d, l, q >= 0.
+    const double* attenuation = light->GetAttenuationValues();
+    const bool attenuated =
+      positional && !(attenuation[0] == 1.0 && attenuation[1] == 0.0 && attenuation[2] == 0.0);
+    const double largestAttenuation = !attenuated ? 1.0
+      : attenuation[0] > 0.0 && attenuation[1] >= 0.0 && attenuation[2] >= 0.0
+      ? 1.0 / attenuation[0]
+      : HUGE_VAL;
+    // The specular sums take the light's specular colour, or its diffuse one where VTK's
+    // colours do not differ (vtkPhongLightUniforms): the larger of the two.
+    double specular = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double colour =
+        std::max(std::abs(light->GetSpecularColor()[c]), std::abs(light->GetDiffuseColor()[c]));
+      specular = std::max(specular, weights[2][c] * colour);
+    }
+    ceiling += std::abs(light->GetIntensity()) * specular * largestAttenuation;
+  };
+  for (vtkLight* light : plan.DirectionalLights)
+  {
+    add(light, false);
+  }
+  for (auto* lights : { &plan.PointLights, &plan.SpotLights })
+  {
+    for (vtkLight* light : *lights)
+    {
+      add(light, true);
+    }
+  }
+  return std::isfinite(ceiling) ? gamma * ceiling : HUGE_VAL;
+}

@@ -10,7 +10,9 @@
  *   float rounding of the lighting itself, while the surface's vertices are fewer than the
  *   fragments it covers (ChooseMode): every light sum per vertex where that bound fits,
  *   else (under two lights or more) the specular sums alone, the diffuse term staying exact
- *   per fragment (its clamp at the terminator is the costliest part of the per-vertex bound).
+ *   per fragment (its clamp at the terminator is the costliest part of the per-vertex bound);
+ * - a whole shininess raised by squaring instead of pow, in whichever mode, its rounding
+ *   charged (WholePowerError).
  * The errors of the mechanisms add up by the triangle inequality, so the picture stays
  * within their sum. Hysteresis is on the safe side only: the planner moves to a cheaper mode
  * when its bound is at most 0.8 of what is left, stays while it fits, and goes back at once
@@ -38,6 +40,16 @@ public:
    */
   static Mode ChooseMode(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
     vtkPhongGouraudBound& triangles, double available, Mode last, double& bound);
+
+  /**
+   * How far the lobes may stray (linear colour) when the plan's lights raise them to the
+   * whole shininess `n` by squaring instead of pow: each of at most 2 floor(log2 n) + 1
+   * products rounds once, a relative error of gamma = k u / (1 - k u) (u = 2^-24) on each
+   * lobe, times the largest specular contribution the lights can make (their intensity,
+   * specular colour and largest attenuation, the materials' ks Cs and normalization).
+   * +inf where a light's values bound nothing (attenuation without a constant term).
+   */
+  static double WholePowerError(const vtkPhongShaderPlan& plan, int n);
 
 private:
   // The rounding of float lighting against the double model, taken off what per-vertex

@@ -69,7 +69,8 @@ enum class vtkPhongFeature : unsigned char
   SumsPerVertex,
   TwoSided,
   ViewVector,
-  Count ///< not a feature: the number of features
+  WholeShininess, ///< under an error budget, the lobe's whole shininess raised by squaring
+  Count           ///< not a feature: the number of features
 };
 
 class VTKRENDERINGPHONG_EXPORT vtkPhongFeatureSet

@@ -102,6 +102,8 @@ struct vtkPhongShaderPlan
   /// ErrorBound is (0 without a budget): what the BudgetUse view shows
   int BudgetMode = 0;
   double BudgetShare = 0.0;
+  /// under WHOLE_SHININESS, the shininess n (2 to 1000) the lobe raises by squaring; else 0
+  int WholeShininess = 0;
   bool Has(vtkPhongFeature feature) const { return this->Features.Has(feature); }
 };
 

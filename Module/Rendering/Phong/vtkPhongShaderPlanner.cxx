@@ -182,12 +182,13 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   SetMaterialFeatures(terms, allFeatures, plan);
   const auto budgetMode = BudgetChoosesMode(ren, actor, terms, state, options, plan);
   plan.BudgetMode = static_cast<int>(budgetMode);
-  plan.BudgetShare = options.ErrorBudget > 0.0 ? plan.ErrorBound / options.ErrorBudget : 0.0;
   plan.Features.Set(Feature::DebugBudget, plan.DebugView == View::BudgetUse);
   const bool perVertex =
     SetInterpolationFeatures(terms, state, geometryView, budgetMode, ren, plan);
   plan.Features.Set(
     Feature::SpecularAntiAliasing, terms.Specular && !perVertex && options.SpecularAntiAliasing);
+  SetWholeShininessFeature(terms, options, plan);
+  plan.BudgetShare = options.ErrorBudget > 0.0 ? plan.ErrorBound / options.ErrorBudget : 0.0;
   SetNormalFeatures(terms, state, perVertex, allFeatures, plan);
   if (this->InterpolatedDotLights == 0)
   {
@@ -536,6 +537,29 @@ std::size_t vtkPhongShaderPlanner::MaximumInterpolatedDotLights()
 }
 
 //------------------------------------------------------------------------------
+// Under an error budget, a whole shininess n from 2 to 1e3 (both faces alike) raises the
+// lobe's cosine by squaring: at most 19 products where llvmpipe's pow takes a logarithm
+// and an exponential. Its rounding (vtkPhongErrorBudget::WholePowerError, about 1e-6 of
+// the lights' specular contributions) is charged to the budget. Not in the exact mode (its
+// shaders stay those of a mapper without a budget), nor with specular anti-aliasing, whose
+// shininess varies per fragment, nor above 1e3 (NARROW_LOBE). Each shininess is its own
+// program, compiled once and cached.
+void vtkPhongShaderPlanner::SetWholeShininessFeature(
+  const Terms& terms, const Options& options, Plan& plan)
+{
+  const double n = vtkPhongMaterial::ShininessOf(plan.FrontMaterial);
+  bool whole = options.ErrorBudget > 0.0 && options.Specialize && terms.Specular &&
+    !plan.Has(Feature::NarrowLobe) && !plan.Has(Feature::SpecularAntiAliasing) && n >= 2.0 &&
+    n <= 1.0e3 && n == std::floor(n) && vtkPhongMaterial::ShininessOf(plan.BackMaterial) == n;
+  const double error =
+    whole ? vtkPhongErrorBudget::WholePowerError(plan, static_cast<int>(n)) : 0.0;
+  whole = whole && plan.ErrorBound + error <= options.ErrorBudget;
+  plan.Features.Set(Feature::WholeShininess, whole);
+  plan.WholeShininess = whole ? static_cast<int>(n) : 0;
+  plan.ErrorBound += whole ? error : 0.0;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkPhongShaderPlanner::MakeSignature(const Plan& plan, bool allFeatures)
 {
   const vtkPhongFeatureSet& features = plan.Features;
@@ -546,6 +570,8 @@ std::string vtkPhongShaderPlanner::MakeSignature(const Plan& plan, bool allFeatu
             << countIf(features.Has(Feature::Directional), plan.DirectionalLights) << " point "
             << countIf(features.Has(Feature::Point), plan.PointLights) << " spot "
             << countIf(features.Has(Feature::Spot), plan.SpotLights) << " | view " << plan.DebugView
+            << (plan.WholeShininess > 0 ? " | shininess " + std::to_string(plan.WholeShininess)
+                                        : std::string())
             << (allFeatures ? " | all features" : "");
   return signature.str();
 }

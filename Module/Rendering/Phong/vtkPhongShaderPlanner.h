@@ -93,6 +93,7 @@ private:
     const Terms& terms, const PrimitiveState& state, bool perVertex, bool allFeatures, Plan& plan);
   static void SetInterpolatedDotsFeature(
     const PrimitiveState& state, bool allowed, std::size_t maximumLights, Plan& plan);
+  static void SetWholeShininessFeature(const Terms& terms, const Options& options, Plan& plan);
   static std::string MakeSignature(const Plan& plan, bool allFeatures);
 
   PlaceholderLights Placeholders;

@@ -241,6 +241,21 @@ bool vtkPhongShaderTemplate::FeatureCondition(
 }
 
 //------------------------------------------------------------------------------
+// The statements raising `x` to the whole power n into `power` (phongWholePower): through the
+// bits of n from the lowest, a product into the power for each bit set and a squaring
+// between bits; n = 30 gives 4 squarings and 4 products.
+std::string vtkPhongShaderTemplate::WholePowerSteps(int n)
+{
+  std::string steps;
+  for (int k = n; k > 0; k >>= 1)
+  {
+    steps += (k & 1) ? "power *= x; " : "";
+    steps += k > 1 ? "x *= x; " : "";
+  }
+  return steps;
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongShaderTemplate::FillPlaceholders(
   std::string& line, const Plan& plan, int lineNumber) const
 {
@@ -251,15 +266,18 @@ void vtkPhongShaderTemplate::FillPlaceholders(
     { "@DIRECTIONAL_VEC4_COUNT@", (plan.DirectionalLights.size() + 3) / 4 },
     { "@SHADOW_FACTOR_COUNT@", static_cast<std::size_t>(plan.ShadowFactorCount) },
   };
-  for (const auto& placeholder : placeholders)
+  const auto replace = [&line](const std::string& name, const std::string& value)
   {
-    const std::string name = placeholder.first;
-    const std::string value = std::to_string(placeholder.second);
     for (auto at = line.find(name); at != std::string::npos; at = line.find(name, at))
     {
       line.replace(at, name.size(), value);
     }
+  };
+  for (const auto& placeholder : placeholders)
+  {
+    replace(placeholder.first, std::to_string(placeholder.second));
   }
+  replace("@WHOLE_POWER_STEPS@", WholePowerSteps(plan.WholeShininess));
   if (line.find('@') != std::string::npos)
   {
     vtkErrorWithObjectMacro(

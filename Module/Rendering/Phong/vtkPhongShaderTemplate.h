@@ -77,6 +77,7 @@ private:
   bool ReadDirective(const std::string& trimmed, const Plan& plan, Reading& reading) const;
   bool FeatureCondition(const std::string& condition, const Plan& plan, int lineNumber) const;
   void FillPlaceholders(std::string& line, const Plan& plan, int lineNumber) const;
+  static std::string WholePowerSteps(int n);
   static void DeclareInvariantPosition(std::map<vtkShader::Type, vtkShader*>& shaders);
   static bool UsesUniformColors(const std::string& fragmentSource);
   void SubstituteFragment(vtkShader* fragmentShader, const std::string& sums,

@@ -163,12 +163,29 @@ float phongGate(float lobe, float NdotL)
 //PHONG_ENDIF
 }
 
+//PHONG_IF WHOLE_SHININESS
+// Under an error budget, x^n for the plan's whole shininess n by squaring: a product per bit
+// of n where pow takes a logarithm and an exponential; its rounding is charged to the budget
+// (vtkPhongErrorBudget::WholePowerError).
+float phongWholePower(float x)
+{
+  float power = 1.0;
+  @WHOLE_POWER_STEPS@
+  return power;
+}
+//PHONG_ENDIF
+
 // The same from the cosine of the lobe. Shininess 0 gives a lobe of 1 wherever the gate is
 // open, which GLSL's pow(0, 0) leaves undefined. A float cosine near 1 resolves 6e-8, which
 // costs the lobe n * 6e-8 of itself: nothing up to n = 1e3 (NARROW_LOBE above).
 float phongGatedLobe(float cosine, float NdotL, float shininess)
 {
+//PHONG_IF WHOLE_SHININESS
+  return phongGate(phongWholePower(clamp(cosine, 0.0, 1.0)), NdotL);
+//PHONG_ENDIF
+//PHONG_IF !WHOLE_SHININESS
   return phongGate(shininess > 0.0 ? pow(clamp(cosine, 0.0, 1.0), shininess) : 1.0, NdotL);
+//PHONG_ENDIF
 }
 //PHONG_IF NARROW_LOBE
 
