@@ -51,6 +51,12 @@ Checks, each failing with "ERROR:":
    ComputeNormals "Never", within a level, on the polydata as it comes (under MPI the file's
    ranks without points count as carrying them) and redistributed; "Always" replaces them
    (the picture differs as the faceted one does).
+9. files nobody here wrote (assimp's test models, --models DIR; skipped without): Wuson as
+   PLY, which carries point normals, is drawn with them by default (the same picture as
+   "Never", no pixel more than 8 levels off), and as STL, which carries none, with computed
+   ones (the same picture as "Always", and not the faceted one of "Never"). ParaView's
+   readers load them on the first rank, the others empty. --files-only runs this check
+   alone (under a memory limit, in vtkPhongParaView-Normals-Files-Limited).
 """
 
 import argparse
@@ -61,8 +67,8 @@ from phong_paraview_testing import fail, load_plugin, prefer_pythonpath, report
 prefer_pythonpath()
 
 from paraview.simple import (  # noqa: E402 (after the path fix)
-    AddLight, Calculator, CreateRenderView, Delaunay3D, PassArrays, GetParaViewVersion, Hide, RedistributeDataSet, Render,
-    ProgrammableFilter, SaveScreenshot, Show, Sphere, TriangleStrips)
+    AddLight, Calculator, CreateRenderView, Delaunay3D, OpenDataFile, PassArrays, GetParaViewVersion, Hide,
+    RedistributeDataSet, Render, ProgrammableFilter, ResetCamera, SaveScreenshot, Show, Sphere, TriangleStrips)
 from paraview.simple import XMLPolyDataReader  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
@@ -258,6 +264,35 @@ def check_data_normals(label, data, view, args, ranks):
         fail("%s: ComputeNormals Always did not replace the data's normals" % label)
 
 
+def check_model_files(models, view, args, ranks):
+    """Check 9: assimp's Wuson with its own normals (PLY) and without (STL), drawn with
+    ComputeNormals "Where Missing" against "Never" and "Always"."""
+    for name, carries in (("PLY/Wuson.ply", True), ("OBJ/WusonOBJ.obj", True), ("STL/Wuson.stl", False)):
+        data = OpenDataFile(os.path.join(models, name))
+        label = os.path.basename(name)
+        pictures = []
+        for mode in (0, 1, 2):  # Never, Where Missing, Always
+            display = show(data, view, "Phong Surface")
+            display.ComputeNormals = mode
+            if mode == 0:
+                ResetCamera(view)
+            pictures.append(shot(view, args.out, "%s-mode%d-%dranks" % (label, mode, ranks)))
+            Hide(data, view)
+            del display
+        never = compare(pictures[1], pictures[0])
+        always = compare(pictures[1], pictures[2])
+        print("%s, %d rank(s): Where Missing against Never %.2f levels mean, %.2f %% off; "
+              "against Always %.2f levels mean, %.2f %% off (%d pixels)" % (
+                  label, ranks, never[0], 100.0 * never[1], always[0], 100.0 * always[1],
+                  never[2]))
+        same, other = (never, always) if carries else (always, never)
+        if same[2] < 1000 or same[0] > 1.0 or same[1] > 0.0:
+            fail("%s: drawn by default as ComputeNormals %s does not draw it" % (
+                label, "Never" if carries else "Always"))
+        if not carries and (other[0] < FACETED_LEAST[0] or other[1] < FACETED_LEAST[1]):
+            fail("%s: without normals in the file, the default drew no computed ones" % label)
+
+
 def check_against_surface(label, display, view, out, exact, ranks):
     """Checks 1 and 2 (3 for the volume): the display drawn as "Phong Surface", then as
     ParaView's "Surface", against the exact normals' picture. Returns the smooth picture."""
@@ -279,6 +314,8 @@ def main():
     parser.add_argument("--server", help="HOST:PORT of a pvserver to connect to")
     parser.add_argument("--from-source", action="store_true",
                         help="the sphere from ParaView's Sphere source, one piece per rank")
+    parser.add_argument("--models", help="assimp's test models (check 9)")
+    parser.add_argument("--files-only", action="store_true", help="check 9 alone")
     args = parser.parse_args()
     args.out = os.path.abspath(args.out)  # the server reads the sphere's file from there
     os.makedirs(args.out, exist_ok=True)
@@ -287,6 +324,10 @@ def main():
         GetParaViewVersion(), ranks, ", no ghost cells" if args.no_ghosts else "",
         ", pieces from the Sphere source" if args.from_source else ""))
 
+    if args.files_only:
+        check_model_files(args.models, make_view(), args, ranks)
+        report()
+        return
     sphere = Sphere(ThetaResolution=24, PhiResolution=24, Radius=0.5)
     if args.from_source:
         bare = PassArrays(Input=sphere, PointDataArrays=[], CellDataArrays=[])
@@ -335,6 +376,9 @@ def main():
     # (Max's weights are exact for points on a sphere): the exact picture is the serial one.
     check_seam("volume", smooth_picture, exact_picture, ranks)
     del exact
+    Hide(volume, view)
+    if args.models and not args.write_baseline:
+        check_model_files(args.models, view, args, ranks)  # last: it moves the camera
 
     report()
 
