@@ -251,7 +251,7 @@ double vtkPhongErrorBudget::WholePowerError(const vtkPhongShaderPlan& plan, int 
   const double gamma = products * u / (1.0 - products * u);
   double weights[3][3];
   vtkPhongLightCulling::MaterialWeights(plan.FrontMaterial, plan.BackMaterial, weights);
-  double ceiling = 0.0;
+  double specular = 0.0, lights = 0.0; // the largest specular, and all, contributions
   const auto add = [&](vtkLight* light, bool positional)
   {
     // A(d) = 1 / max(c + l d + q d^2, 1e-20) <= 1 / c for d, l, q >= 0.
@@ -264,25 +264,32 @@ double vtkPhongErrorBudget::WholePowerError(const vtkPhongShaderPlan& plan, int 
       : HUGE_VAL;
     // The specular sums take the light's specular colour, or its diffuse one where VTK's
     // colours do not differ (vtkPhongLightUniforms): the larger of the two.
-    double specular = 0.0;
+    double lobe = 0.0, diffuse = 0.0;
     for (int c = 0; c < 3; ++c)
     {
       const double colour =
         std::max(std::abs(light->GetSpecularColor()[c]), std::abs(light->GetDiffuseColor()[c]));
-      specular = std::max(specular, weights[2][c] * colour);
+      lobe = std::max(lobe, weights[2][c] * colour);
+      diffuse = std::max(diffuse, weights[1][c] * std::abs(light->GetDiffuseColor()[c]));
     }
-    ceiling += std::abs(light->GetIntensity()) * specular * largestAttenuation;
+    const double scale = std::abs(light->GetIntensity()) * largestAttenuation;
+    specular += scale * lobe;
+    lights += scale * (lobe + diffuse);
   };
   for (vtkLight* light : plan.DirectionalLights)
   {
     add(light, false);
   }
-  for (auto* lights : { &plan.PointLights, &plan.SpotLights })
+  for (auto* positional : { &plan.PointLights, &plan.SpotLights })
   {
-    for (vtkLight* light : *lights)
+    for (vtkLight* light : *positional)
     {
       add(light, true);
     }
   }
-  return std::isfinite(ceiling) ? gamma * ceiling : HUGE_VAL;
+  // The products' own rounding; then, since the program is not the exact mode's, the rounding
+  // both programs share but each makes its own way: the cosine's (8 u, which the lobe
+  // multiplies by up to n) and the lighting's, the per-vertex modes' float margin (FloatMargin).
+  const double error = (gamma + 8.0 * n * u) * specular + 0.01 / 255.0 + 2.0e-5 * lights;
+  return std::isfinite(error) ? error : HUGE_VAL;
 }

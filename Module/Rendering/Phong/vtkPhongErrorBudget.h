@@ -42,12 +42,15 @@ public:
     vtkPhongGouraudBound& triangles, double available, Mode last, double& bound);
 
   /**
-   * How far the lobes may stray (linear colour) when the plan's lights raise them to the
-   * whole shininess `n` by squaring instead of pow: each of at most 2 floor(log2 n) + 1
+   * How far the picture may stray (linear colour) when the plan's lights raise their lobes to
+   * the whole shininess `n` by squaring instead of pow: each of at most 2 floor(log2 n) + 1
    * products rounds once, a relative error of gamma = k u / (1 - k u) (u = 2^-24) on each
-   * lobe, times the largest specular contribution the lights can make (their intensity,
-   * specular colour and largest attenuation, the materials' ks Cs and normalization).
-   * +inf where a light's values bound nothing (attenuation without a constant term).
+   * lobe; and, the program not being the exact one, the rounding both make their own way:
+   * the cosine's (8 u, which the lobe multiplies by up to n) and the lighting's (0.01 level
+   * and 2e-5 of the lights' largest contributions, FloatMargin's). The contributions count
+   * the lights' intensity, colours and largest attenuation, the materials' weights and the
+   * lobe's normalization. +inf where a light's values bound nothing (attenuation without a
+   * constant term).
    */
   static double WholePowerError(const vtkPhongShaderPlan& plan, int n);
 

@@ -539,8 +539,9 @@ std::size_t vtkPhongShaderPlanner::MaximumInterpolatedDotLights()
 //------------------------------------------------------------------------------
 // Under an error budget, a whole shininess n from 2 to 1e3 (both faces alike) raises the
 // lobe's cosine by squaring: at most 19 products where llvmpipe's pow takes a logarithm
-// and an exponential. Its rounding (vtkPhongErrorBudget::WholePowerError, about 1e-6 of
-// the lights' specular contributions) is charged to the budget. Not in the exact mode (its
+// and an exponential. Its rounding, and the rounding a program other than the exact one makes
+// its own way (vtkPhongErrorBudget::WholePowerError), is charged to the budget, and the
+// squaring used only where that fits what is left. Not in the exact mode (its
 // shaders stay those of a mapper without a budget), nor with specular anti-aliasing, whose
 // shininess varies per fragment, nor above 1e3 (NARROW_LOBE). Each shininess is its own
 // program, compiled once and cached.

@@ -314,17 +314,55 @@ void PlaceCamera(vtkRenderer* renderer, double distance, double azimuth, double 
   renderer->ResetCameraClippingRange();
 }
 
+// RunRandom's second generator's scenes: more lights of every kind, a normalized lobe, other
+// shininesses.
+void AddVariety(vtkPhongTest::Scene& view, vtkPhongProperty* material, std::mt19937& extra)
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  if (extra() % 6 == 0)
+  {
+    const double origin[3] = { 0.0, 0.0, 0.0 };
+    for (int i = 0; i < 24; ++i)
+    {
+      const double position[3] = { 4.0 * unit(extra) - 2.0, 4.0 * unit(extra) - 2.0,
+        3.0 * unit(extra) - 0.5 };
+      const double color[3] = { unit(extra), unit(extra), unit(extra) };
+      const int kind = static_cast<int>(extra() % 4); // directional, point, spot, headlight
+      vtkLight* light = vtkPhongTest::AddLight(view, position, origin, color,
+        kind == 1 || kind == 2, kind == 3 ? VTK_LIGHT_TYPE_HEADLIGHT : VTK_LIGHT_TYPE_SCENE_LIGHT);
+      light->SetIntensity(0.05 + 0.05 * unit(extra));
+      light->SetConeAngle(kind == 2 ? 20.0 + 40.0 * unit(extra) : 180.0);
+      light->SetExponent(kind == 2 ? 1.0 + 4.0 * unit(extra) : 1.0);
+      light->SetAttenuationValues(1.0, 0.5 * unit(extra), 0.5 * unit(extra));
+    }
+    material->SetSoftSpotEdge(extra() % 2 == 0);
+  }
+  if (extra() % 4 == 0)
+  {
+    material->SetLightingModel(
+      extra() % 2 ? vtkPhongProperty::NormalizedBlinnPhong : vtkPhongProperty::NormalizedPhong);
+  }
+  if (extra() % 8 == 0)
+  {
+    material->SetShininess(extra() % 2 ? 30.0 : 1.0e4);
+  }
+}
+
 // Random scenes from a fixed seed, each frame within its budget with no exception: a sphere
 // of 16 to 256 rows, an ellipsoid (its normals transformed) or CGAL's bunny00 (normals
 // computed by the mapper); 1 to 8 directional lights of random directions, colours and
 // intensities, and in one scene of four a point or spot light; n from 1 to 1e3, Blinn or
 // Phong; one- or two-sided; parallel or perspective from 1.6 to 8 radii (nearer more often);
 // the actor turned and scaled (a similarity), in one scene of eight stretched (not one);
-// windows of 240 to 480 pixels; budgets of 0.25 to 8 levels. Counts how often each mode was
-// chosen.
+// windows of 240 to 480 pixels; budgets of 0.25 to 8 levels. A second generator adds, without
+// changing those draws: in one scene of six 24 dim lights more of every kind (attenuated
+// points, spots with falloff exponents and hard or soft edges, a headlight), in one of eight a
+// point light just off the surface, in one of four a normalized lobe, in one of eight n = 30
+// or 1e4. Counts how often each mode was chosen.
 bool RunRandom(int count, unsigned seed, vtkPolyData* bunny)
 {
   std::mt19937 random(seed);
+  std::mt19937 extra(seed + 7919);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double shininess[] = { 1.0, 10.0, 40.0, 200.0, 1.0e3 };
   const double budgets[] = { 0.25, 0.5, 1.0, 2.0, 4.0, 8.0 };
@@ -368,6 +406,7 @@ bool RunRandom(int count, unsigned seed, vtkPolyData* bunny)
     material->SetLightingModel(
       random() % 2 ? vtkPhongProperty::BlinnPhong : vtkPhongProperty::Phong);
     material->SetInterpolationToPhong();
+    AddVariety(view, material, extra);
     const int shape = static_cast<int>(random() % 6);
     vtkSmartPointer<vtkPolyData> mesh = shape < 4 ? vtkPhongTest::MakeSphere(rows[random() % 6])
       : shape == 4                                ? vtkPhongTest::MakeSphere(rows[random() % 6])
@@ -402,6 +441,12 @@ bool RunRandom(int count, unsigned seed, vtkPolyData* bunny)
     view.Renderer->GetActiveCamera()->SetParallelProjection(parallel);
     view.Renderer->GetActiveCamera()->SetParallelScale(radius * (0.8 + unit(random)));
     view.Renderer->ResetCameraClippingRange();
+    if (extra() % 8 == 0)
+    {
+      const double near[3] = { 0.7 * radius, 0.3 * radius, 0.75 * radius };
+      const double warm[3] = { 1.0, 0.9, 0.8 };
+      vtkPhongTest::AddLight(view, near, origin, warm, true)->SetIntensity(0.2);
+    }
     const Outcome outcome = Measure(view, actor, budget);
     excused += outcome.Excused;
     ++chosen[outcome.Chosen];
