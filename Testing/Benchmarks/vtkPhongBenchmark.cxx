@@ -1097,8 +1097,9 @@ const char* BudgetMode(vtkPhongPolyDataMapper* mapper)
 // What the error budget buys (vtkPhongPolyDataMapper::SetErrorBudget): stock, exact vtkPhong
 // and vtkPhong under budgets of 0.5, 1 and 3 levels on the sphere and each mesh given, under
 // the kinds section's light sets of 1 and 8 lights; the materials of that section, Blinn-Phong
-// for vtkPhong. Each budget's column: ms, the mode it chose (fragment: exact; specular: the
-// specular sums per vertex; vertex: every sum) and its bound in levels.
+// for vtkPhong. Each budget's column: ms, the mode it chose (fragment: every sum per fragment,
+// the lobe by squaring where that fits; specular: the specular sums per vertex; vertex:
+// every sum) and its bound in levels.
 void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
 {
   const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
@@ -1159,9 +1160,10 @@ void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
       std::fflush(stdout);
     }
   }
-  std::printf("(each budget: ms, mode, bound in levels; fragment = exact shaders, specular = "
-              "the specular sums per vertex and the diffuse per fragment, vertex = every sum "
-              "per vertex; ratios: budget 1 to stock and to exact, 0.5 to exact, 3 to stock)\n");
+  std::printf("(each budget: ms, mode, bound in levels; fragment = every sum per fragment, "
+              "the lobe by squaring where its rounding fits, specular = the specular sums per "
+              "vertex and the diffuse per fragment, vertex = every sum per vertex; ratios: "
+              "budget 1 to stock and to exact, 0.5 to exact, 3 to stock)\n");
   PlannerCost(meshes, quick);
 }
 
