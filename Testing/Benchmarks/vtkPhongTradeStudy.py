@@ -12,6 +12,7 @@ It writes
     <out>/tradeoff.csv   one row per configuration
     <out>/tradeoff.png   frame time against error, the Pareto front marked
     <out>/tradeoff.md    the tables and recommendations (docs/results/tradeoff.md)
+    <out>/tradeoff-budget.csv  frame time and error against the error budget
 
     PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
         Testing/Benchmarks/vtkPhongTradeStudy.py --out docs [--quick]
@@ -45,6 +46,11 @@ SURFACES = ("sphere", "torus")
 FIELDS = ["surface", "resolution", "triangles", "interpolation", "lobe", "normals", "lights",
           "frame_ms", "mean_error", "p99_error", "max_error", "mean_levels", "p99_levels",
           "max_levels"]
+# The error budget (vtkPhongPolyDataMapper::SetErrorBudget), in levels: 0 is the exact mode.
+BUDGETS = (0.0, 0.5, 1.0, 2.0, 4.0)
+BUDGET_RESOLUTIONS = (64, 128, 256)
+BUDGET_FIELDS = ["surface", "resolution", "triangles", "lights", "budget", "mode", "bound",
+                 "frame_ms", "mean_levels", "p99_levels", "max_levels"]
 
 
 def tessellate(surface, resolution):
@@ -249,6 +255,108 @@ def run(study, quick, out):
     return rows
 
 
+def budget_mode(mapper):
+    """The mode the mapper's last plan chose under its budget, from its shader signature."""
+    signature = mapper.GetLastShaderSignature()
+    mode = ("per fragment" if "PER_VERTEX" not in signature.split("|")[0].split()
+            else "specular per vertex" if "DIFFUSE_PER_FRAGMENT" in signature
+            else "per vertex")
+    return mode + (", squared" if "WHOLE_SHININESS" in signature else "")
+
+
+def run_budgets(study, quick, out):
+    """Frame time and error against the error budget: Phong interpolation, exact normals, the
+    Blinn-Phong lobe, for each surface, resolution, light set and budget."""
+    rows = []
+    resolutions = (32,) if quick else BUDGET_RESOLUTIONS
+    for surface in SURFACES:
+        for resolution in resolutions:
+            mesh = tessellate(surface, resolution)
+            study.mapper.SetInputData(mesh)
+            for lights in LIGHTS:
+                study.configure("Phong", "Blinn-Phong", lights)
+                exact = study.exact_picture(surface, "Blinn-Phong", lights)
+                for budget in BUDGETS:
+                    study.mapper.SetErrorBudget(budget)
+                    milliseconds = 1e3 * study.frame_time()
+                    mean, p99, largest = study.error(exact)
+                    rows.append({"surface": surface, "resolution": resolution,
+                                 "triangles": mesh.GetNumberOfPolys(), "lights": lights,
+                                 "budget": budget, "mode": budget_mode(study.mapper),
+                                 "bound": round(study.mapper.GetErrorBound(), 3),
+                                 "frame_ms": round(milliseconds, 3),
+                                 "mean_levels": round(255 * mean, 4),
+                                 "p99_levels": round(255 * p99, 4),
+                                 "max_levels": round(255 * largest, 4)})
+    study.mapper.SetErrorBudget(0.0)
+    print("%d budget configurations measured" % len(rows))
+    with open(os.path.join(out, "tradeoff-budget.csv"), "w", newline="") as stream:
+        writer = csv.DictWriter(stream, fieldnames=BUDGET_FIELDS)
+        writer.writeheader()
+        writer.writerows(rows)
+    return rows
+
+
+def read_budget_rows(out):
+    path = os.path.join(out, "tradeoff-budget.csv")
+    if not os.path.exists(path):
+        return []
+    with open(path, newline="") as stream:
+        rows = list(csv.DictReader(stream))
+    for row in rows:
+        for field in ("resolution", "triangles"):
+            row[field] = int(row[field])
+        for field in ("budget", "bound", "frame_ms", "mean_levels", "p99_levels", "max_levels"):
+            row[field] = float(row[field])
+    return rows
+
+
+def check_budgets(rows):
+    """Against the exact surface, a budget of B adds at most B to the exact mode's largest
+    error (the triangle inequality, pixel by pixel), and is never slower than the exact mode
+    by more than the noise."""
+    failures = []
+    for row in rows:
+        exact = next(r for r in rows if r["surface"] == row["surface"] and
+                     r["resolution"] == row["resolution"] and r["lights"] == row["lights"] and
+                     r["budget"] == 0.0)
+        if row["max_levels"] > exact["max_levels"] + row["budget"] + 0.01:
+            failures.append("%s %d, %s, budget %g: largest error %.3f beyond the exact mode's "
+                            "%.3f plus the budget" % (row["surface"], row["resolution"],
+                                                       row["lights"], row["budget"],
+                                                       row["max_levels"], exact["max_levels"]))
+    return failures
+
+
+def budget_report(rows):
+    """The page's section on the error budget (empty without its rows)."""
+    if not rows:
+        return []
+    lines = ["", "## Frame time against the error budget (Phong interpolation, exact normals, "
+             "Blinn-Phong)", "",
+             "`SetErrorBudget(levels)` (docs/lighting-model.md, \"Error budget\"): how far each",
+             "pixel may stray from the exact per-fragment model of the mesh. The errors here are",
+             "against the exact surface, as above, so they hold the mesh's own error too: a",
+             "budget of B adds at most B to the exact mode's largest error. Mode: where the",
+             "light sums went (per fragment, the specular sums per vertex, every sum per",
+             "vertex; \"squared\": the whole shininess raised by squaring); bound: what the",
+             "mapper spent of the budget (levels). The eight lights include point and spot",
+             "lights, which no per-vertex bound covers yet. This section alone:",
+             "`PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3",
+             "Testing/Benchmarks/vtkPhongTradeStudy.py --out docs/results --budget-only`.", "",
+             "| surface | lights | budget | mode | bound | frame (ms) | vs exact | p99 | max (levels) |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for row in rows:
+        exact = next(r for r in rows if r["surface"] == row["surface"] and
+                     r["resolution"] == row["resolution"] and r["lights"] == row["lights"] and
+                     r["budget"] == 0.0)
+        lines.append("| %s %d | %s | %g | %s | %.2f | %.1f | %.2fx | %.2f | %.2f |" % (
+            row["surface"], row["resolution"], row["lights"], row["budget"], row["mode"],
+            row["bound"], row["frame_ms"], row["frame_ms"] / exact["frame_ms"],
+            row["p99_levels"], row["max_levels"]))
+    return lines
+
+
 def read_rows(out):
     with open(os.path.join(out, "tradeoff.csv"), newline="") as stream:
         rows = list(csv.DictReader(stream))
@@ -319,7 +427,7 @@ def fastest(rows, limit, key="p99_levels"):
     return min(candidates, key=lambda r: r["frame_ms"]) if candidates else None
 
 
-def report(rows, out, command):
+def report(rows, out, command, budget_rows=()):
     lines = ["# The speed/accuracy trade",
              "",
              "Generated by `%s` (docs/results/tradeoff.csv holds every row; this page, the" % command,
@@ -412,6 +520,7 @@ def report(rows, out, command):
                 lines.append("| %s | %s | %s | %.1f | %.3f | %.2f | %.1f |" % (
                     surface, lights, label(row), row["frame_ms"], row["mean_levels"],
                     row["p99_levels"], row["max_levels"]))
+    lines += budget_report(budget_rows)
     with open(os.path.join(out, "tradeoff.md"), "w") as stream:
         stream.write("\n".join(lines) + "\n")
 
@@ -489,6 +598,8 @@ def main():
     parser.add_argument("--quick", action="store_true", help="two resolutions, tiny images")
     parser.add_argument("--replot", action="store_true",
                         help="no rendering: rewrite the page and plot from <out>/tradeoff.csv")
+    parser.add_argument("--budget-only", action="store_true",
+                        help="render the error budget's part alone, the rest from the CSV")
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     vtkObject.GlobalWarningDisplayOff()
@@ -497,14 +608,16 @@ def main():
     STUDY_SIZE = "%dx%d" % size
     study = None if args.replot else Study(size[0], size[1], 2 if args.quick else 5,
                                              1 if args.quick else 3)
-    if args.replot:
+    if args.replot or args.budget_only:
         rows = read_rows(args.out)
     else:
         rows = run(study, args.quick, args.out)
-    failures = check(rows)
+    budget_rows = (read_budget_rows(args.out) if args.replot
+                   else run_budgets(study, args.quick, args.out))
+    failures = check(rows) + check_budgets(budget_rows)
     for failure in failures:
         print("ERROR: " + failure, file=sys.stderr)
-    report(rows, args.out, "./vtkphong.sh study")
+    report(rows, args.out, "./vtkphong.sh study", budget_rows)
     try:
         plot(rows, args.out)
     except ImportError:

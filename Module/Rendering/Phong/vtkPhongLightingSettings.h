@@ -158,7 +158,9 @@ public:
    *   sums interpolated (VTK's true Gouraud), when the bound on the difference from
    *   per-fragment lighting, over every triangle and every light, fits what culling left and
    *   the mesh's vertices are fewer than the fragments it covers (on sub-pixel triangles
-   *   per-vertex lighting costs more, and the mapper keeps per fragment).
+   *   per-vertex lighting costs more, and the mapper keeps per fragment);
+   * - a whole shininess from 2 to 1000 is raised by squaring instead of pow, its rounding
+   *   charged to the budget.
    * Only in the final view. Each choice is its own cached program.
    */
   virtual void SetErrorBudget(double levels);
