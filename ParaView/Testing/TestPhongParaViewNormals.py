@@ -241,18 +241,27 @@ def check_nan_point(polydata, view, args, ranks):
         fail("a NaN point: Phong Surface covers %d pixels, Surface %d" % (covered[1], covered[0]))
 
 
+def shots_by_mode(data, view, args, name, frame=False):
+    """The data drawn by "Phong Surface" with ComputeNormals Never, Where Missing and Always
+    (0, 1, 2), in that order; `frame`: the camera reset to the data first."""
+    pictures = []
+    for mode in (0, 1, 2):
+        display = show(data, view, "Phong Surface")
+        display.ComputeNormals = mode
+        if frame and mode == 0:
+            ResetCamera(view)
+        pictures.append(shot(view, args.out, "%s-mode%d" % (name, mode)))
+        Hide(data, view)
+        del display
+    return pictures
+
+
 def check_data_normals(label, data, view, args, ranks):
     """Check 8: the data's own point normals (a constant +z) drawn by default, replaced with
     ComputeNormals "Always"."""
     carried = Calculator(Input=data, ResultArrayName="Normals", Function="kHat")
     carried.ResultNormals = 1
-    pictures = []
-    for mode in (0, 1, 2):  # Never, Where Missing, Always
-        display = show(carried, view, "Phong Surface")
-        display.ComputeNormals = mode
-        pictures.append(shot(view, args.out, "%s-normals-mode%d-%dranks" % (label, mode, ranks)))
-        Hide(carried, view)
-        del display
+    pictures = shots_by_mode(carried, view, args, "%s-normals-%dranks" % (label, ranks))
     kept = compare(pictures[1], pictures[0])
     replaced = compare(pictures[2], pictures[0])
     print("%s with its own normals, %d rank(s): Where Missing against Never %.2f levels mean, "
@@ -270,15 +279,7 @@ def check_model_files(models, view, args, ranks):
     for name, carries in (("PLY/Wuson.ply", True), ("OBJ/WusonOBJ.obj", True), ("STL/Wuson.stl", False)):
         data = OpenDataFile(os.path.join(models, name))
         label = os.path.basename(name)
-        pictures = []
-        for mode in (0, 1, 2):  # Never, Where Missing, Always
-            display = show(data, view, "Phong Surface")
-            display.ComputeNormals = mode
-            if mode == 0:
-                ResetCamera(view)
-            pictures.append(shot(view, args.out, "%s-mode%d-%dranks" % (label, mode, ranks)))
-            Hide(data, view)
-            del display
+        pictures = shots_by_mode(data, view, args, "%s-%dranks" % (label, ranks), frame=True)
         never = compare(pictures[1], pictures[0])
         always = compare(pictures[1], pictures[2])
         print("%s, %d rank(s): Where Missing against Never %.2f levels mean, %.2f %% off; "

@@ -248,10 +248,26 @@ def run(study, quick, out):
             sys.stdout.write("\r%d/%d configurations" % (index + 1, len(configs)))
             sys.stdout.flush()
     print("%d configurations measured" % len(configs))
-    with open(os.path.join(out, "tradeoff.csv"), "w", newline="") as stream:
-        writer = csv.DictWriter(stream, fieldnames=FIELDS)
+    write_csv(os.path.join(out, "tradeoff.csv"), FIELDS, rows)
+    return rows
+
+
+def write_csv(path, fields, rows):
+    with open(path, "w", newline="") as stream:
+        writer = csv.DictWriter(stream, fieldnames=fields)
         writer.writeheader()
         writer.writerows(rows)
+
+
+def read_csv(path, integers, reals):
+    """The rows of a CSV the study wrote, its `integers` and `reals` fields converted."""
+    with open(path, newline="") as stream:
+        rows = list(csv.DictReader(stream))
+    for row in rows:
+        for field in integers:
+            row[field] = int(row[field])
+        for field in reals:
+            row[field] = float(row[field])
     return rows
 
 
@@ -290,10 +306,7 @@ def run_budgets(study, quick, out):
                                  "max_levels": round(255 * largest, 4)})
     study.mapper.SetErrorBudget(0.0)
     print("%d budget configurations measured" % len(rows))
-    with open(os.path.join(out, "tradeoff-budget.csv"), "w", newline="") as stream:
-        writer = csv.DictWriter(stream, fieldnames=BUDGET_FIELDS)
-        writer.writeheader()
-        writer.writerows(rows)
+    write_csv(os.path.join(out, "tradeoff-budget.csv"), BUDGET_FIELDS, rows)
     return rows
 
 
@@ -301,14 +314,15 @@ def read_budget_rows(out):
     path = os.path.join(out, "tradeoff-budget.csv")
     if not os.path.exists(path):
         return []
-    with open(path, newline="") as stream:
-        rows = list(csv.DictReader(stream))
-    for row in rows:
-        for field in ("resolution", "triangles"):
-            row[field] = int(row[field])
-        for field in ("budget", "bound", "frame_ms", "mean_levels", "p99_levels", "max_levels"):
-            row[field] = float(row[field])
-    return rows
+    return read_csv(path, ("resolution", "triangles"),
+                    ("budget", "bound", "frame_ms", "mean_levels", "p99_levels", "max_levels"))
+
+
+def exact_row(rows, row):
+    """The exact mode's row (budget 0) of the same scene."""
+    return next(r for r in rows if r["surface"] == row["surface"] and
+                r["resolution"] == row["resolution"] and r["lights"] == row["lights"] and
+                r["budget"] == 0.0)
 
 
 def check_budgets(rows):
@@ -317,9 +331,7 @@ def check_budgets(rows):
     by more than the noise."""
     failures = []
     for row in rows:
-        exact = next(r for r in rows if r["surface"] == row["surface"] and
-                     r["resolution"] == row["resolution"] and r["lights"] == row["lights"] and
-                     r["budget"] == 0.0)
+        exact = exact_row(rows, row)
         if row["max_levels"] > exact["max_levels"] + row["budget"] + 0.01:
             failures.append("%s %d, %s, budget %g: largest error %.3f beyond the exact mode's "
                             "%.3f plus the budget" % (row["surface"], row["resolution"],
@@ -347,9 +359,7 @@ def budget_report(rows):
              "| surface | lights | budget | mode | bound | frame (ms) | vs exact | p99 | max (levels) |",
              "|---|---|---|---|---|---|---|---|---|"]
     for row in rows:
-        exact = next(r for r in rows if r["surface"] == row["surface"] and
-                     r["resolution"] == row["resolution"] and r["lights"] == row["lights"] and
-                     r["budget"] == 0.0)
+        exact = exact_row(rows, row)
         lines.append("| %s %d | %s | %g | %s | %.2f | %.1f | %.2fx | %.2f | %.2f |" % (
             row["surface"], row["resolution"], row["lights"], row["budget"], row["mode"],
             row["bound"], row["frame_ms"], row["frame_ms"] / exact["frame_ms"],
@@ -358,14 +368,7 @@ def budget_report(rows):
 
 
 def read_rows(out):
-    with open(os.path.join(out, "tradeoff.csv"), newline="") as stream:
-        rows = list(csv.DictReader(stream))
-    for row in rows:
-        for field in ("resolution", "triangles"):
-            row[field] = int(row[field])
-        for field in FIELDS[7:]:
-            row[field] = float(row[field])
-    return rows
+    return read_csv(os.path.join(out, "tradeoff.csv"), ("resolution", "triangles"), FIELDS[7:])
 
 
 def pareto(rows):
