@@ -22,6 +22,13 @@ namespace
 {
 using Vector = std::array<double, 3>;
 
+// The rounding of float lighting against the double model, for lights whose largest
+// contributions add up to `contributions`: 0.01 level plus 2e-5 of them.
+double RoundingMargin(double contributions)
+{
+  return 0.01 / 255.0 + 2.0e-5 * contributions;
+}
+
 // The largest over channels of weight[c] * colour[c] * intensity.
 double Strength(const double weight[3], const double* color, double intensity)
 {
@@ -145,7 +152,7 @@ double vtkPhongErrorBudget::FloatMargin(const vtkPhongGouraudBound::Scene& scene
   {
     largest += light.Diffuse + light.Specular;
   }
-  return 0.01 / 255.0 + 2.0e-5 * largest;
+  return RoundingMargin(largest);
 }
 
 //------------------------------------------------------------------------------
@@ -263,18 +270,13 @@ double vtkPhongErrorBudget::WholePowerError(const vtkPhongShaderPlan& plan, int 
       ? 1.0 / attenuation[0]
       : HUGE_VAL;
     // The specular sums take the light's specular colour, or its diffuse one where VTK's
-    // colours do not differ (vtkPhongLightUniforms): the larger of the two.
-    double lobe = 0.0, diffuse = 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      const double colour =
-        std::max(std::abs(light->GetSpecularColor()[c]), std::abs(light->GetDiffuseColor()[c]));
-      lobe = std::max(lobe, weights[2][c] * colour);
-      diffuse = std::max(diffuse, weights[1][c] * std::abs(light->GetDiffuseColor()[c]));
-    }
-    const double scale = std::abs(light->GetIntensity()) * largestAttenuation;
-    specular += scale * lobe;
-    lights += scale * (lobe + diffuse);
+    // colours do not differ (vtkPhongLightUniforms): the larger of the two, as uploaded.
+    const double intensity = light->GetIntensity();
+    const double lobe = std::max(Strength(weights[2], light->GetSpecularColor(), intensity),
+      Strength(weights[2], light->GetDiffuseColor(), intensity));
+    const double diffuse = Strength(weights[1], light->GetDiffuseColor(), intensity);
+    specular += largestAttenuation * lobe;
+    lights += largestAttenuation * (lobe + diffuse);
   };
   for (vtkLight* light : plan.DirectionalLights)
   {
@@ -290,6 +292,6 @@ double vtkPhongErrorBudget::WholePowerError(const vtkPhongShaderPlan& plan, int 
   // The products' own rounding; then, since the program is not the exact mode's, the rounding
   // both programs share but each makes its own way: the cosine's (8 u, which the lobe
   // multiplies by up to n) and the lighting's, the per-vertex modes' float margin (FloatMargin).
-  const double error = (gamma + 8.0 * n * u) * specular + 0.01 / 255.0 + 2.0e-5 * lights;
+  const double error = (gamma + 8.0 * n * u) * specular + RoundingMargin(lights);
   return std::isfinite(error) ? error : HUGE_VAL;
 }

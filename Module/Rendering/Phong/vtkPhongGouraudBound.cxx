@@ -198,11 +198,11 @@ double vtkPhongGouraudBound::LobeBound(
   const auto sup = [&](int q, double peak, double peakAngle)
   {
     const double p = n - q;
-    const auto sinPower = [q](double sine) { return q == 2 ? sine * sine : sine; };
+    const auto toQ = [q](double value) { return q == 2 ? value * value : value; };
     if (p > 0.0 && a.Value >= peakAngle)
     {
-      const double cosQ = sinPower(a.Cos); // cos^p = cos^n / cos^q, cos(a) > 0 here
-      return (cosQ > 1.0e-100 ? a.CosN / cosQ : std::pow(a.Cos, p)) * sinPower(a.Sin);
+      const double cosQ = toQ(a.Cos); // cos^p = cos^n / cos^q, cos(a) > 0 here
+      return (cosQ > 1.0e-100 ? a.CosN / cosQ : std::pow(a.Cos, p)) * toQ(a.Sin);
     }
     if (p > 0.0 && b > peakAngle)
     {
@@ -212,7 +212,7 @@ double vtkPhongGouraudBound::LobeBound(
     {
       return Infinite; // cos^p grows without bound at the lobe's edge
     }
-    return std::pow(std::cos(b), p) * sinPower(std::sin(b));
+    return std::pow(std::cos(b), p) * toQ(std::sin(b));
   };
   // d2/dalpha2 cos^n = n(n-1) cos^(n-2) sin^2 - n cos^n; s'(c) c = n cos^n;
   // s'(c) sin = n cos^(n-1) sin.
@@ -473,7 +473,8 @@ bool vtkPhongGouraudBound::MakeView(const Scene& scene, const Cell& cell, View& 
 vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, const Scene& scene,
   const Exponent& exponent, const View& view, const std::vector<Halfway>& halfways)
 {
-  const double cosWidth = cell.CosWidth, sinWidth = cell.SinWidth; // the normals' around d
+  // The normals' angles around d: within Cone + Spread.
+  const double cosWidth = cell.CosWidth, sinWidth = cell.SinWidth;
   const bool wide = cell.Cone + cell.Spread >= HalfPi;
   // The view vector's spread over one triangle (0 in parallel projection).
   const double localView = scene.Parallel ? 0.0

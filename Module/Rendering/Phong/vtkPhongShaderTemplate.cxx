@@ -277,7 +277,11 @@ void vtkPhongShaderTemplate::FillPlaceholders(
   {
     replace(placeholder.first, std::to_string(placeholder.second));
   }
-  replace("@WHOLE_POWER_STEPS@", WholePowerSteps(plan.WholeShininess));
+  const std::string steps = "@WHOLE_POWER_STEPS@";
+  if (line.find(steps) != std::string::npos) // one line of the template: made only there
+  {
+    replace(steps, WholePowerSteps(plan.WholeShininess));
+  }
   if (line.find('@') != std::string::npos)
   {
     vtkErrorWithObjectMacro(
