@@ -1083,15 +1083,18 @@ void PlannerCost(
               "still; limited at 1 level but \"whole\")\n");
 }
 
-// The mode a vtkPhong mapper's last plan chose under its error budget.
+// The mode a vtkPhong mapper's last plan chose under its error budget, in a word.
 const char* BudgetMode(vtkPhongPolyDataMapper* mapper)
 {
-  const std::string signature = mapper->GetLastShaderSignature();
-  if (signature.find("PER_VERTEX") == std::string::npos)
+  switch (mapper->GetBudgetMode())
   {
-    return "fragment";
+    case vtkPhongPolyDataMapper::BudgetPerVertex:
+      return "vertex";
+    case vtkPhongPolyDataMapper::BudgetSpecularPerVertex:
+      return "specular";
+    default:
+      return "fragment";
   }
-  return signature.find("DIFFUSE_PER_FRAGMENT") != std::string::npos ? "specular" : "vertex";
 }
 
 // What the error budget buys (vtkPhongPolyDataMapper::SetErrorBudget): stock, exact vtkPhong

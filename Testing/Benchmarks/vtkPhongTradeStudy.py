@@ -272,12 +272,8 @@ def read_csv(path, integers, reals):
 
 
 def budget_mode(mapper):
-    """The mode the mapper's last plan chose under its budget, from its shader signature."""
-    signature = mapper.GetLastShaderSignature()
-    mode = ("per fragment" if "PER_VERTEX" not in signature.split("|")[0].split()
-            else "specular per vertex" if "DIFFUSE_PER_FRAGMENT" in signature
-            else "per vertex")
-    return mode + (", squared" if "WHOLE_SHININESS" in signature else "")
+    """The mode the mapper's last plan chose under its budget, and whether it squared the lobe."""
+    return mapper.GetBudgetModeAsString() + (", squared" if mapper.GetSquaredShininess() else "")
 
 
 def run_budgets(study, quick, out):

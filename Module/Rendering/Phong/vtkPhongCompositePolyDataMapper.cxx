@@ -73,10 +73,11 @@ struct vtkPhongCompositePolyDataMapper::Internals
   }
 
   // A value of the helpers' cores, the largest.
-  double Largest(double (vtkPhongMapperCore::*value)() const)
+  template <typename Value>
+  Value Largest(Value (vtkPhongMapperCore::*value)() const)
   {
     this->Prune();
-    double largest = 0.0;
+    Value largest = 0;
     for (const auto& helper : this->Helpers)
     {
       largest = std::max(largest, (helper->GetCore()->*value)());
@@ -254,6 +255,24 @@ double vtkPhongCompositePolyDataMapper::GetErrorBound()
 }
 
 //------------------------------------------------------------------------------
+int vtkPhongCompositePolyDataMapper::GetBudgetMode()
+{
+  return this->Internal->Largest(&vtkPhongMapperCore::GetBudgetMode);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongCompositePolyDataMapper::GetBudgetModeAsString()
+{
+  return vtkPhongLightingSettings::GetBudgetModeAsString(this->GetBudgetMode());
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongCompositePolyDataMapper::GetSquaredShininess()
+{
+  return this->Internal->Largest(&vtkPhongMapperCore::GetSquaredShininess);
+}
+
+//------------------------------------------------------------------------------
 bool vtkPhongCompositePolyDataMapper::GetUsedClosedSurfaceCulling()
 {
   return this->Internal->Any(&vtkPhongBlockMapper::GetUsedClosedSurfaceCulling);
@@ -295,4 +314,7 @@ void vtkPhongCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShaderCompileCount: " << this->GetShaderCompileCount() << "\n";
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";
   os << indent << "LastShaderSignature: " << this->GetLastShaderSignature() << "\n";
+  os << indent << "ErrorBound: " << this->GetErrorBound() << "\n";
+  os << indent << "BudgetMode: " << this->GetBudgetModeAsString() << "\n";
+  os << indent << "SquaredShininess: " << this->GetSquaredShininess() << "\n";
 }

@@ -76,6 +76,18 @@ public:
 
   ///@{
   /**
+   * What else the blocks' last planned primitives spent ErrorBudget on, as
+   * vtkPhongPolyDataMapper reports it for itself: the most approximate of their modes
+   * (BudgetModes; "per fragment", "specular per vertex" or "per vertex"), and the largest
+   * whole shininess a block raised by squaring (0: pow everywhere).
+   */
+  int GetBudgetMode();
+  const char* GetBudgetModeAsString();
+  int GetSquaredShininess();
+  ///@}
+
+  ///@{
+  /**
    * Whether a block mapper culled back faces, and whether one drew with the depth pre-pass,
    * in the last render.
    */

@@ -100,7 +100,7 @@ Vector ToModel(vtkMatrix4x4* viewToModel, const double directionVC[3])
 //------------------------------------------------------------------------------
 vtkPhongErrorBudget::Mode vtkPhongErrorBudget::ChooseMode(vtkRenderer* ren, vtkActor* actor,
   const vtkPhongShaderPlan& plan, vtkPhongGouraudBound& triangles, double available, Mode last,
-  double& bound)
+  bool squared, double& bound)
 {
   bound = 0.0;
   vtkPhongGouraudBound::Scene scene;
@@ -122,7 +122,8 @@ vtkPhongErrorBudget::Mode vtkPhongErrorBudget::ChooseMode(vtkRenderer* ren, vtkA
     bound = bounds.PerVertex;
     return Mode::PerVertex;
   }
-  if (fits(bounds.SpecularPerVertex, Mode::SpecularPerVertex) && SpecularPerVertexPays(scene))
+  if (fits(bounds.SpecularPerVertex, Mode::SpecularPerVertex) &&
+    SpecularPerVertexPays(scene, squared))
   {
     bound = bounds.SpecularPerVertex;
     return Mode::SpecularPerVertex;
@@ -132,16 +133,19 @@ vtkPhongErrorBudget::Mode vtkPhongErrorBudget::ChooseMode(vtkRenderer* ren, vtkA
 
 //------------------------------------------------------------------------------
 // The specular sums per vertex save each fragment the lobes, and cost it the interpolated
-// normal's scale and more inputs (llvmpipe, sphere 256 at 1280 x 1024: 1.0x exact at one
-// light, 0.85x at 8; docs/results/performance.md): only for two lights and more.
-bool vtkPhongErrorBudget::SpecularPerVertexPays(const vtkPhongGouraudBound::Scene& scene)
+// normal's scale and more inputs (llvmpipe, sphere 256 at 1280 x 1024, docs/results/
+// performance.md). Against lobes raised by pow: 1.0x exact at one light, 0.85x at 8, so from
+// two lobes. Against lobes squared per fragment: 1.03-1.06x at 8 directional lights, 1.0x at
+// 16, 0.81x at 24, so from 20.
+bool vtkPhongErrorBudget::SpecularPerVertexPays(
+  const vtkPhongGouraudBound::Scene& scene, bool squared)
 {
   std::size_t lobes = 0;
   for (const auto& light : scene.Lights)
   {
     lobes += light.Specular > 0.0 ? 1 : 0;
   }
-  return lobes >= 2;
+  return lobes >= (squared ? 20 : 2);
 }
 
 //------------------------------------------------------------------------------

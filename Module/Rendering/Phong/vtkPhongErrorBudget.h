@@ -9,8 +9,9 @@
  * - per-vertex lighting of the surface (vtkPhongGouraudBound), with what is left less the
  *   float rounding of the lighting itself, while the surface's vertices are fewer than the
  *   fragments it covers (ChooseMode): every light sum per vertex where that bound fits,
- *   else (under two lights or more) the specular sums alone, the diffuse term staying exact
- *   per fragment (its clamp at the terminator is the costliest part of the per-vertex bound);
+ *   else (under two lobes or more, 20 or more where the lobes would be squared per fragment)
+ *   the specular sums alone, the diffuse term staying exact per fragment (its clamp at the
+ *   terminator is the costliest part of the per-vertex bound);
  * - a whole shininess raised by squaring instead of pow, in whichever mode, its rounding
  *   charged (WholePowerError).
  * The errors of the mechanisms add up by the triangle inequality, so the picture stays
@@ -35,11 +36,12 @@ public:
 
   /**
    * The cheapest mode of the plan's light sums within `available` (linear colour), given the
-   * primitive's binned triangles and `last`, the last choice; `bound` receives the chosen
+   * primitive's binned triangles, `last`, the last choice, and whether per fragment the lobes
+   * would be raised by squaring (`squared`, WholePowerError); `bound` receives the chosen
    * mode's bound (0 per fragment).
    */
   static Mode ChooseMode(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
-    vtkPhongGouraudBound& triangles, double available, Mode last, double& bound);
+    vtkPhongGouraudBound& triangles, double available, Mode last, bool squared, double& bound);
 
   /**
    * How far the picture may stray (linear colour) when the plan's lights raise their lobes to
@@ -62,8 +64,9 @@ private:
   // normals; false when the actor's matrix is not a similarity (angles would not hold).
   static bool MakeScene(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
     vtkPhongGouraudBound::Scene& scene);
-  // Whether the specular sums alone per vertex save more than they cost: two lobes or more.
-  static bool SpecularPerVertexPays(const vtkPhongGouraudBound::Scene& scene);
+  // Whether the specular sums alone per vertex save more than they cost: two lobes or more,
+  // 20 or more where per fragment the lobes would be squared.
+  static bool SpecularPerVertexPays(const vtkPhongGouraudBound::Scene& scene, bool squared);
   // Whether per-vertex lighting costs less: vertices x sides against the covered fragments.
   static bool PerVertexIsCheaper(
     vtkRenderer* ren, vtkActor* actor, const vtkPhongGouraudBound& triangles, bool twoSided);

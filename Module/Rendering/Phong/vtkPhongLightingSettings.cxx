@@ -32,6 +32,22 @@ void vtkPhongLightingSettings::SetErrorBudget(double levels, vtkObject* reporter
 }
 
 //------------------------------------------------------------------------------
+const char* vtkPhongLightingSettings::GetBudgetModeAsString(int mode)
+{
+  switch (mode)
+  {
+    case BudgetPerFragment:
+      return "per fragment";
+    case BudgetSpecularPerVertex:
+      return "specular per vertex";
+    case BudgetPerVertex:
+      return "per vertex";
+    default:
+      return "unknown";
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongLightingSettings::SetChecked(
   vtkObject* reporter, const char* name, double& member, double value, double largest)
 {

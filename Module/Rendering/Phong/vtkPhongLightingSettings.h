@@ -72,6 +72,24 @@ public:
     DepthPrePassAutomatic = 2
   };
 
+  /**
+   * Where a primitive's light sums went under ErrorBudget (the mappers' GetBudgetMode):
+   * every sum at each fragment, as in the exact mode; the specular sums at the vertices and
+   * the diffuse term at each fragment; every sum at the vertices, interpolated.
+   */
+  enum BudgetModes
+  {
+    BudgetPerFragment = 0,
+    BudgetSpecularPerVertex = 1,
+    BudgetPerVertex = 2
+  };
+
+  /**
+   * A BudgetModes value's name: "per fragment", "specular per vertex", "per vertex"
+   * ("unknown" for any other value).
+   */
+  static const char* GetBudgetModeAsString(int mode);
+
   ///@{
   /**
    * The debug view. Default Final; one of the DebugViews (values are clamped).
@@ -337,9 +355,9 @@ private:
 /**
  * The lighting settings as a mapper exposes them: every setting of vtkPhongLightingSettings
  * under the same name, forwarded to the mapper's settings object, with the debug-view and
- * pre-pass enumerations; GetMTime counts the settings' changes. Used once in the class body
- * of each vtkPhong mapper, which defines GetLightingSettings and SetLightingSettings (a
- * mapper always has settings: nullptr is refused).
+ * pre-pass and budget-mode enumerations; GetMTime counts the settings' changes. Used once in
+ * the class body of each vtkPhong mapper, which defines GetLightingSettings and
+ * SetLightingSettings (a mapper always has settings: nullptr is refused).
  */
 #define vtkPhongLightingSettingsForwardingMacro()                                                  \
   enum DebugViews                                                                                  \
@@ -360,6 +378,12 @@ private:
     DepthPrePassOff = vtkPhongLightingSettings::DepthPrePassOff,                                   \
     DepthPrePassOn = vtkPhongLightingSettings::DepthPrePassOn,                                     \
     DepthPrePassAutomatic = vtkPhongLightingSettings::DepthPrePassAutomatic                        \
+  };                                                                                               \
+  enum BudgetModes                                                                                 \
+  {                                                                                                \
+    BudgetPerFragment = vtkPhongLightingSettings::BudgetPerFragment,                               \
+    BudgetSpecularPerVertex = vtkPhongLightingSettings::BudgetSpecularPerVertex,                   \
+    BudgetPerVertex = vtkPhongLightingSettings::BudgetPerVertex                                    \
   };                                                                                               \
   vtkPhongLightingSettings* GetLightingSettings();                                                 \
   void SetLightingSettings(vtkPhongLightingSettings* settings);                                    \

@@ -8,6 +8,7 @@
 #include "vtkOpenGLHelper.h"
 #include "vtkPhongCompatibility.h"
 #include "vtkPhongLightUniforms.h"
+#include "vtkPhongLightingSettings.h"
 #include "vtkPhongMaterialUniforms.h"
 #include "vtkPhongProblemLog.h"
 #include "vtkPhongShaderPlanner.h"
@@ -65,6 +66,8 @@ struct vtkPhongMapperCore::Internals
   int ShaderCompileCount = 0;
   int CulledLights = 0;
   double ErrorBound = 0.0;
+  int BudgetMode = 0;
+  int SquaredShininess = 0;
   double LastShaderBuildTime = 0.0;
   std::string LastSignature;
   std::string LastVertexSource;
@@ -118,6 +121,8 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
   }
   this->Internal->CulledLights = plan.CulledLights;
   this->Internal->ErrorBound = plan.ErrorBound;
+  this->Internal->BudgetMode = plan.BudgetMode;
+  this->Internal->SquaredShininess = plan.WholeShininess;
   auto& current = this->Internal->Plans[&cellBO];
   const bool changed = current.Signature != plan.Signature;
   current = std::move(plan);
@@ -526,6 +531,18 @@ double vtkPhongMapperCore::GetErrorBound() const
 }
 
 //------------------------------------------------------------------------------
+int vtkPhongMapperCore::GetBudgetMode() const
+{
+  return this->Internal->BudgetMode;
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongMapperCore::GetSquaredShininess() const
+{
+  return this->Internal->SquaredShininess;
+}
+
+//------------------------------------------------------------------------------
 const std::string& vtkPhongMapperCore::GetLastShaderSignature() const
 {
   return this->Internal->LastSignature;
@@ -560,6 +577,12 @@ void vtkPhongMapperCore::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfShaderVariants: " << this->GetNumberOfShaderVariants() << "\n";
   os << indent << "LastShaderBuildTime: " << this->GetLastShaderBuildTime() << "\n";
   os << indent << "LastShaderSignature: " << this->GetLastShaderSignature() << "\n";
+  os << indent << "NumberOfCulledLights: " << this->GetNumberOfCulledLights() << "\n";
+  os << indent << "ErrorBound: " << this->GetErrorBound() << "\n";
+  os << indent
+     << "BudgetMode: " << vtkPhongLightingSettings::GetBudgetModeAsString(this->GetBudgetMode())
+     << "\n";
+  os << indent << "SquaredShininess: " << this->GetSquaredShininess() << "\n";
   os << indent << "Primitives planned: " << this->Internal->Plans.size() << "\n";
   os << indent << "Failed variants: " << this->Internal->FailedSignatures.size() << "\n";
   os << indent << "MaximumNumberOfPrograms: " << this->MaximumNumberOfPrograms << "\n";

@@ -144,6 +144,8 @@ public:
   double GetLastShaderBuildTime() const;
   int GetNumberOfCulledLights() const; ///< by the last planned primitive
   double GetErrorBound() const;        ///< of the last planned primitive, in 8-bit levels
+  int GetBudgetMode() const;           ///< of the last planned primitive (BudgetModes)
+  int GetSquaredShininess() const;     ///< of the last planned primitive; 0: pow
   const std::string& GetLastShaderSignature() const;
   const std::string& GetLastVertexShaderSource() const;
   const std::string& GetLastFragmentShaderSource() const;

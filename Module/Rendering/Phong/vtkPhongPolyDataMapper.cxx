@@ -302,6 +302,24 @@ double vtkPhongPolyDataMapper::GetErrorBound()
 }
 
 //------------------------------------------------------------------------------
+int vtkPhongPolyDataMapper::GetBudgetMode()
+{
+  return this->GetCore()->GetBudgetMode();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPhongPolyDataMapper::GetBudgetModeAsString()
+{
+  return vtkPhongLightingSettings::GetBudgetModeAsString(this->GetBudgetMode());
+}
+
+//------------------------------------------------------------------------------
+int vtkPhongPolyDataMapper::GetSquaredShininess()
+{
+  return this->GetCore()->GetSquaredShininess();
+}
+
+//------------------------------------------------------------------------------
 bool vtkPhongPolyDataMapper::GetUsedClosedSurfaceCulling()
 {
   return this->Superclass::GetUsedClosedSurfaceCulling();

@@ -118,6 +118,19 @@ public:
 
   ///@{
   /**
+   * What else the last planned primitive spent ErrorBudget on: where its light sums went
+   * (BudgetModes: BudgetPerFragment, always so without a budget, BudgetSpecularPerVertex or
+   * BudgetPerVertex; as a string, "per fragment", "specular per vertex" or "per vertex"),
+   * and the whole shininess its lobes raised by squaring instead of pow (0: pow, as in the
+   * exact mode). The BudgetUse debug view shows the mode in colour.
+   */
+  int GetBudgetMode();
+  const char* GetBudgetModeAsString();
+  int GetSquaredShininess();
+  ///@}
+
+  ///@{
+  /**
    * What the last draw did: whether it used the depth pre-pass, the fragments a plain draw
    * shades per visible one as last measured by the automatic pre-pass (0: not measured), the
    * triangles the last depth pass drew (0 without a pre-pass), and whether it culled the back

@@ -423,9 +423,14 @@ vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer*
   {
     return Mode::PerFragment;
   }
+  // Per fragment, would the lobes be squared? Then the specular sums per vertex pay only for
+  // many lobes (vtkPhongErrorBudget::ChooseMode).
+  const int n = SquarableShininess(terms, options, plan);
+  const bool squared =
+    n > 0 && plan.ErrorBound + vtkPhongErrorBudget::WholePowerError(plan, n) <= options.ErrorBudget;
   double bound = 0.0;
-  triangles->Chosen = vtkPhongErrorBudget::ChooseMode(
-    ren, actor, plan, *triangles, options.ErrorBudget - plan.ErrorBound, triangles->Chosen, bound);
+  triangles->Chosen = vtkPhongErrorBudget::ChooseMode(ren, actor, plan, *triangles,
+    options.ErrorBudget - plan.ErrorBound, triangles->Chosen, squared, bound);
   plan.ErrorBound += bound;
   return triangles->Chosen;
 }
@@ -548,16 +553,24 @@ std::size_t vtkPhongShaderPlanner::MaximumInterpolatedDotLights()
 void vtkPhongShaderPlanner::SetWholeShininessFeature(
   const Terms& terms, const Options& options, Plan& plan)
 {
-  const double n = vtkPhongMaterial::ShininessOf(plan.FrontMaterial);
-  bool whole = options.ErrorBudget > 0.0 && options.Specialize && terms.Specular &&
-    !plan.Has(Feature::NarrowLobe) && !plan.Has(Feature::SpecularAntiAliasing) && n >= 2.0 &&
-    n <= 1.0e3 && n == std::floor(n) && vtkPhongMaterial::ShininessOf(plan.BackMaterial) == n;
-  const double error =
-    whole ? vtkPhongErrorBudget::WholePowerError(plan, static_cast<int>(n)) : 0.0;
-  whole = whole && plan.ErrorBound + error <= options.ErrorBudget;
+  const int n = SquarableShininess(terms, options, plan);
+  const double error = n > 0 ? vtkPhongErrorBudget::WholePowerError(plan, n) : 0.0;
+  const bool whole = n > 0 && plan.ErrorBound + error <= options.ErrorBudget;
   plan.Features.Set(Feature::WholeShininess, whole);
-  plan.WholeShininess = whole ? static_cast<int>(n) : 0;
+  plan.WholeShininess = whole ? n : 0;
   plan.ErrorBound += whole ? error : 0.0;
+}
+
+//------------------------------------------------------------------------------
+// The shininess SetWholeShininessFeature may square, its charge aside; else 0.
+int vtkPhongShaderPlanner::SquarableShininess(
+  const Terms& terms, const Options& options, const Plan& plan)
+{
+  const double n = vtkPhongMaterial::ShininessOf(plan.FrontMaterial);
+  const bool whole = options.ErrorBudget > 0.0 && options.Specialize && terms.Specular &&
+    !plan.Has(Feature::NarrowLobe) && !options.SpecularAntiAliasing && n >= 2.0 && n <= 1.0e3 &&
+    n == std::floor(n) && vtkPhongMaterial::ShininessOf(plan.BackMaterial) == n;
+  return whole ? static_cast<int>(n) : 0;
 }
 
 //------------------------------------------------------------------------------

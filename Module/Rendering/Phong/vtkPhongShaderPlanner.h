@@ -94,6 +94,7 @@ private:
   static void SetInterpolatedDotsFeature(
     const PrimitiveState& state, bool allowed, std::size_t maximumLights, Plan& plan);
   static void SetWholeShininessFeature(const Terms& terms, const Options& options, Plan& plan);
+  static int SquarableShininess(const Terms& terms, const Options& options, const Plan& plan);
   static std::string MakeSignature(const Plan& plan, bool allFeatures);
 
   PlaceholderLights Placeholders;

@@ -18,6 +18,7 @@
 #include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPhongCompositePolyDataMapper.h"
+#include "vtkPhongLightingSettings.h"
 #include "vtkPhongOFFReader.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
@@ -34,9 +35,9 @@ namespace
 {
 enum Mode
 {
-  PerFragment,
-  SpecularPerVertex,
-  PerVertex
+  PerFragment = vtkPhongLightingSettings::BudgetPerFragment,
+  SpecularPerVertex = vtkPhongLightingSettings::BudgetSpecularPerVertex,
+  PerVertex = vtkPhongLightingSettings::BudgetPerVertex
 };
 const char* ModeNames[] = { "per fragment", "specular per vertex", "per vertex" };
 
@@ -81,18 +82,57 @@ vtkActor* AddSurface(vtkPhongTest::Scene& view, const Case& c, vtkPolyData* mesh
   return actor;
 }
 
-// The last plan's signature and bound, from either mapper.
-void LastPlan(vtkActor* actor, std::string& signature, double& bound)
+// What the last plan chose, as either mapper reports it.
+struct Plan
+{
+  std::string Signature;
+  double Bound = 0.0; // levels
+  int Mode = PerFragment;
+  std::string ModeName;
+  int SquaredShininess = 0;
+};
+
+template <class Mapper>
+Plan LastPlanOf(Mapper* mapper)
+{
+  Plan plan;
+  plan.Signature = mapper->GetLastShaderSignature();
+  plan.Bound = mapper->GetErrorBound();
+  plan.Mode = mapper->GetBudgetMode();
+  plan.ModeName = mapper->GetBudgetModeAsString();
+  plan.SquaredShininess = mapper->GetSquaredShininess();
+  return plan;
+}
+
+Plan LastPlan(vtkActor* actor)
 {
   if (auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper()))
   {
-    signature = mapper->GetLastShaderSignature();
-    bound = mapper->GetErrorBound();
-    return;
+    return LastPlanOf(mapper);
   }
-  auto* composite = vtkPhongCompositePolyDataMapper::SafeDownCast(actor->GetMapper());
-  signature = composite->GetLastShaderSignature();
-  bound = composite->GetErrorBound();
+  return LastPlanOf(vtkPhongCompositePolyDataMapper::SafeDownCast(actor->GetMapper()));
+}
+
+// Whether the mapper's report (GetBudgetMode, its name, GetSquaredShininess) is what the shader
+// it built does, as its signature's features say.
+bool ReportMatchesShader(const Plan& plan)
+{
+  const std::string& signature = plan.Signature;
+  const int built = signature.find("PER_VERTEX") == std::string::npos ? PerFragment
+    : signature.find("DIFFUSE_PER_FRAGMENT") != std::string::npos     ? SpecularPerVertex
+                                                                      : PerVertex;
+  const std::string squared = " | shininess " + std::to_string(plan.SquaredShininess);
+  const bool squaring = signature.find("WHOLE_SHININESS") != std::string::npos;
+  const bool ok = plan.Mode == built && plan.ModeName == ModeNames[built] &&
+    squaring == (plan.SquaredShininess > 0) &&
+    (!squaring || signature.find(squared) != std::string::npos);
+  if (!ok)
+  {
+    std::cerr << "the mapper reports " << plan.ModeName << " (" << plan.Mode
+              << "), squared shininess " << plan.SquaredShininess << "; its shader: " << signature
+              << "\n";
+  }
+  return ok;
 }
 
 void AddLights(vtkPhongTest::Scene& view, const Case& c)
@@ -123,6 +163,8 @@ struct Outcome
   vtkIdType Pixels = 0;
   bool Valid = false; // compared, and no NaN or infinite pixel
   std::string Signature;
+  int SquaredShininess = 0;
+  bool Reported = true;  // the mapper's report matches its shader (ReportMatchesShader)
   vtkIdType Excused = 0; // pixels on a discontinuity of the model (ExcuseDiscontinuities)
 };
 
@@ -177,7 +219,12 @@ Outcome Measure(vtkPhongTest::Scene& view, vtkActor* actor, double budget)
   reference->SetActor(actor);
   auto picture = vtkPhongTest::RenderFloat(view, pass);
   Outcome outcome;
-  LastPlan(actor, outcome.Signature, outcome.Bound);
+  const Plan plan = LastPlan(actor);
+  outcome.Signature = plan.Signature;
+  outcome.Bound = plan.Bound;
+  outcome.Chosen = static_cast<Mode>(plan.Mode);
+  outcome.SquaredShininess = plan.SquaredShininess;
+  outcome.Reported = ReportMatchesShader(plan);
   auto exact = vtkPhongTest::ShadeGBuffer(view, pass, reference);
   auto measured = vtkPhongTest::MeasureAgainst(picture, exact, 1);
   if (budget > 0.0 && measured.MaxAbsolute * 255.0 > budget) // never for the exact mode itself
@@ -188,13 +235,10 @@ Outcome Measure(vtkPhongTest::Scene& view, vtkActor* actor, double budget)
     outcome.Excused = ExcuseDiscontinuities(picture, exactPicture, exact);
     measured = vtkPhongTest::MeasureAgainst(picture, exact, 1);
   }
-  const std::string& signature = outcome.Signature;
-  outcome.Chosen = signature.find("PER_VERTEX") == std::string::npos ? PerFragment
-    : signature.find("DIFFUSE_PER_FRAGMENT") != std::string::npos    ? SpecularPerVertex
-                                                                     : PerVertex;
   outcome.Error = measured.MaxAbsolute * 255.0;
   outcome.Pixels = measured.ComparedPixels;
-  outcome.Valid = measured.Valid && measured.NaNPixels == 0 && measured.InfPixels == 0;
+  outcome.Valid =
+    measured.Valid && measured.NaNPixels == 0 && measured.InfPixels == 0 && outcome.Reported;
   return outcome;
 }
 
@@ -285,10 +329,10 @@ bool RunCase(const Case& c, vtkPolyData* file)
   // exact mode.
   const bool whole = c.Budget > 0.0 && c.Specular > 0.0 && c.Shininess >= 2.0 &&
     c.Shininess <= 1.0e3 && c.Shininess == std::floor(c.Shininess);
-  if ((signature.find("WHOLE_SHININESS") != std::string::npos) != whole)
+  if (outcome.SquaredShininess != (whole ? static_cast<int>(c.Shininess) : 0))
   {
     std::cerr << c.Name << ": " << (whole ? "expected" : "unexpected")
-              << " WHOLE_SHININESS; signature " << signature << "\n";
+              << " a lobe by squaring; signature " << signature << "\n";
     ok = false;
   }
   // The exact mode's own float rounding is far below a level; a budget is a hard maximum.
@@ -315,7 +359,7 @@ void PlaceCamera(vtkRenderer* renderer, double distance, double azimuth, double 
 }
 
 // RunRandom's second generator's scenes: more lights of every kind, a normalized lobe, other
-// shininesses.
+// shininesses, some not whole.
 void AddVariety(vtkPhongTest::Scene& view, vtkPhongProperty* material, std::mt19937& extra)
 {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -346,6 +390,12 @@ void AddVariety(vtkPhongTest::Scene& view, vtkPhongProperty* material, std::mt19
   {
     material->SetShininess(extra() % 2 ? 30.0 : 1.0e4);
   }
+  // Not whole, the lobes keep pow per fragment, against which the specular sums per vertex pay
+  // from two lobes (squared, from 20): the sweep reaches that mode.
+  if (extra() % 4 == 0)
+  {
+    material->SetShininess(material->GetShininess() + 0.5);
+  }
 }
 
 // Random scenes from a fixed seed, each frame within its budget with no exception: a sphere
@@ -358,7 +408,7 @@ void AddVariety(vtkPhongTest::Scene& view, vtkPhongProperty* material, std::mt19
 // changing those draws: in one scene of six 24 dim lights more of every kind (attenuated
 // points, spots with falloff exponents and hard or soft edges, a headlight), in one of eight a
 // point light just off the surface, in one of four a normalized lobe, in one of eight n = 30
-// or 1e4. Counts how often each mode was chosen.
+// or 1e4, in one of four n + 0.5. Counts how often each mode was chosen.
 bool RunRandom(int count, unsigned seed, vtkPolyData* bunny)
 {
   std::mt19937 random(seed);
@@ -474,14 +524,15 @@ bool RunRandom(int count, unsigned seed, vtkPolyData* bunny)
   return ok;
 }
 
-// A camera turning around a sphere of 128 rows and moving in and out (1.6 to 7 radii,
-// perspective) under 3 directional lights, budget 1.5 levels: the view vector's spread and the
-// covered fragments change, and with them the mode. Every frame within the budget; at least two
-// modes seen.
+// A camera turning around a sphere of 192 rows and moving in and out (1.6 to 7 radii,
+// perspective) under 3 directional lights, budget 1.5 levels, shininess 40.5 (pow per
+// fragment, against which the specular mode pays from two lobes): the view vector's spread and
+// the covered fragments change, and with them the mode. Every frame within the budget; at
+// least two modes seen.
 bool RunOrbit(int frames)
 {
   vtkPhongTest::Scene view(400, 400);
-  Case c = { "orbit", 192, 400, 3, false, 40.0, true, false, 1.5, PerFragment };
+  Case c = { "orbit", 192, 400, 3, false, 40.5, true, false, 1.5, PerFragment };
   view.Renderer->AutomaticLightCreationOff();
   view.Renderer->SetAmbient(0.3, 0.3, 0.3);
   AddLights(view, c);
@@ -489,7 +540,7 @@ bool RunOrbit(int frames)
   material->SetColor(0.8, 0.6, 0.4);
   material->SetDiffuse(0.7);
   material->SetSpecular(0.5);
-  material->SetShininess(40.0);
+  material->SetShininess(c.Shininess);
   material->SetLightingModelToBlinnPhong();
   material->SetInterpolationToPhong();
   vtkActor* actor = AddSurface(view, c, vtkPhongTest::MakeSphere(c.Resolution));
@@ -562,20 +613,26 @@ int TestPhongErrorBudget(int argc, char* argv[])
       false, 6.0, PerVertex },
     { "sphere 128, 2 lights, Blinn 200, 8 levels", 128, 600, 2, false, 200.0, true, true, 8.0,
       PerVertex },
-    { "sphere 128, 3 lights, Blinn 40, 2 levels: the terminator's kink does not fit", 128, 600, 3,
-      false, 40.0, true, true, 2.0, SpecularPerVertex },
+    // A shininess that is not whole keeps pow per fragment, against which the specular sums per
+    // vertex pay from two lobes; against lobes squared per fragment, from 20.
+    { "sphere 128, 3 lights, Blinn 40.5, 2 levels: the terminator's kink does not fit", 128, 600, 3,
+      false, 40.5, true, true, 2.0, SpecularPerVertex },
+    { "sphere 128, 3 lights, Blinn 40, 2 levels: 3 squared lobes cost less per fragment", 128, 600,
+      3, false, 40.0, true, true, 2.0, PerFragment },
+    { "sphere 256, 24 lights, Blinn 40, 0.5 level: 24 squared lobes cost more per fragment", 256,
+      600, 24, false, 40.0, true, true, 0.5, SpecularPerVertex },
     { "sphere 128, 3 lights, Blinn 40, 1 level: the lobe does not fit", 128, 600, 3, false, 40.0,
       true, true, 1.0, PerFragment },
-    { "sphere 256, 3 lights, Blinn 40, 1 level", 256, 600, 3, false, 40.0, true, true, 1.0,
+    { "sphere 256, 3 lights, Blinn 40.5, 1 level", 256, 600, 3, false, 40.5, true, true, 1.0,
       SpecularPerVertex },
     // Issue 13's 8 lights: each of an eighth of the light, every sum fits per vertex.
     { "sphere 256, 8 lights, Blinn 40, perspective, 1 level", 256, 600, 8, false, 40.0, true, false,
       1.0, PerVertex },
     { "sphere 256, 8 lights, Phong 40, one-sided, 1 level", 256, 600, 8, false, 40.0, false, true,
       1.0, PerVertex, false, true },
-    { "sphere 256, 3 lights, Blinn 40, one-sided, perspective, 1 level", 256, 600, 3, false, 40.0,
+    { "sphere 256, 3 lights, Blinn 40.5, one-sided, perspective, 1 level", 256, 600, 3, false, 40.5,
       true, false, 1.0, SpecularPerVertex, false, true },
-    { "sphere 256, 3 lights, Blinn 40, 0.5 level", 256, 600, 3, false, 40.0, true, true, 0.5,
+    { "sphere 256, 3 lights, Blinn 40.5, 0.5 level", 256, 600, 3, false, 40.5, true, true, 0.5,
       SpecularPerVertex },
     { "sphere 64, no specular, 0.25 level: no lobes to move per vertex", 64, 600, 3, false, 40.0,
       true, false, 0.25, PerFragment, false, false, 0.0 },
@@ -590,7 +647,7 @@ int TestPhongErrorBudget(int argc, char* argv[])
       true, true, 1.0, PerFragment },
     { "composite, two blocks, sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0,
       true, true, 3.0, PerVertex, true },
-    { "composite, two blocks, sphere 128, 3 lights, Blinn 40, 2 levels", 128, 600, 3, false, 40.0,
+    { "composite, two blocks, sphere 128, 3 lights, Blinn 40.5, 2 levels", 128, 600, 3, false, 40.5,
       true, true, 2.0, SpecularPerVertex, true },
     { "bunny00, computed normals, 3 lights, Blinn 40, 2 levels", 0, 600, 3, false, 40.0, true,
       false, 2.0, PerFragment },

@@ -72,4 +72,19 @@ signature = mappers[0].GetLastShaderSignature()
 checks.expect("directional 2 point 0 spot 1" in signature, "two directional, one spot: " + signature)
 checks.expect("LOBE_BLINN" in signature, "Blinn-Phong lobe in the signature")
 checks.expect(compare_with_baseline(window, "TestPhongPythonRender", args), "matches the baseline")
+
+# Under an error budget the mapper reports what it spent it on: a spot light keeps the sums per
+# fragment (positional lights have no per-vertex bound), and the whole shininess 300 is squared.
+mappers[0].SetErrorBudget(2.0)
+window.Render()
+checks.expect(mappers[0].GetBudgetMode() == vtkphong.vtkPhongPolyDataMapper.BudgetPerFragment and
+              mappers[0].GetBudgetModeAsString() == "per fragment",
+              "budget 2: per fragment, not " + mappers[0].GetBudgetModeAsString())
+checks.expect(mappers[0].GetSquaredShininess() == 300 and 0.0 < mappers[0].GetErrorBound() <= 2.0,
+              "budget 2: shininess 300 squared (%d), bound %g within it"
+              % (mappers[0].GetSquaredShininess(), mappers[0].GetErrorBound()))
+mappers[0].SetErrorBudget(0.0)
+window.Render()
+checks.expect(mappers[0].GetSquaredShininess() == 0 and mappers[0].GetErrorBound() == 0.0,
+              "the exact mode squares nothing and spends nothing")
 checks.exit()
