@@ -276,6 +276,7 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
     }
     cell.Reach = 0.5 * Norm(diagonal);
     cell.Normals = Cap(cell.Spread);
+    cell.ReflectionSkew = ReflectionSkew(cell.Spread);
     cell.CosWidth = std::cos(cell.Cone + cell.Spread);
     cell.SinWidth = std::sin(cell.Cone + cell.Spread);
   }
@@ -476,10 +477,7 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, c
   // The normals' angles around d: within Cone + Spread.
   const double cosWidth = cell.CosWidth, sinWidth = cell.SinWidth;
   const bool wide = cell.Cone + cell.Spread >= HalfPi;
-  // The view vector's spread over one triangle (0 in parallel projection).
-  const double localView = scene.Parallel ? 0.0
-    : cell.Radius < view.Nearest          ? std::asin(cell.Radius / view.Nearest)
-                                          : Infinite;
+  const LocalView localView = MakeLocalView(scene, cell, view);
   const Cap& normals = cell.Normals;
   const double cosGateOpen = std::sin(1.0e-3); // cos(pi/2 - 1e-3)
   Bounds largest = { 0.0, 0.0 };
@@ -522,6 +520,67 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, c
 }
 
 //------------------------------------------------------------------------------
+// The view vector over one triangle of the cell, in perspective (0 and 0 in parallel
+// projection). Its vertices' eye vectors w_i (lengths d_i) lie in a cone of half-angle rho,
+// sin(rho) <= r / D, r the triangle's radius and D the eye's least distance (Spread = rho).
+// At a fragment the view vector is w(b) = sum b_i w_i normalized, not the normalized
+// interpolation u(b) of the unit vectors v_i that the cap model takes: with e_i = d_i / d_min - 1
+// in [0, delta], delta <= 2r / D, w(b) / d_min = u + e for e = sum b_i e_i v_i, and
+// |u + e| >= cos(rho) (along the cone's axis), |e across u| <= delta sin(2 rho), so the angle
+// between them has a sine of at most 2 delta sin(rho) <= 4 r^2 / D^2 (Skew; while rho <= pi/4).
+vtkPhongGouraudBound::LocalView vtkPhongGouraudBound::MakeLocalView(
+  const Scene& scene, const Cell& cell, const View& view)
+{
+  LocalView local;
+  if (scene.Parallel)
+  {
+    return local;
+  }
+  const double sine = cell.Radius / view.Nearest;
+  if (!(sine < std::sqrt(0.5)))
+  {
+    local.Spread = local.Skew = Infinite;
+    return local;
+  }
+  local.Spread = std::asin(sine);
+  local.Skew = std::asin(std::min(4.0 * sine * sine, 1.0));
+  return local;
+}
+
+//------------------------------------------------------------------------------
+// Phong's lobe reflects the interpolated normal N(b) = m / |m|, m = sum b_i n_i, where the cap
+// model (radius 2R) interpolates the reflected vectors r_i = 2 (n_i.L) n_i - L. With
+// d_i = n_i - N, sum b_i r_i = r(N) + 4 (|m| - 1)(N.L) N + 2 sum b_i (d_i.L) d_i, and
+// sum b_i |d_i|^2 = 2 (1 - |m|) <= 2 (1 - cos R): the two differ by at most 8 (1 - cos R),
+// and their directions by an angle whose sine is at most that.
+double vtkPhongGouraudBound::ReflectionSkew(double spread)
+{
+  const double half = std::sin(0.5 * spread);
+  return std::asin(std::min(16.0 * half * half, 1.0));
+}
+
+//------------------------------------------------------------------------------
+// The sup of |d/dalpha max(cos(alpha), 0)^n| for alpha from `a` to pi/2: n cos^(n-1) sin,
+// whose one peak is at SlopePeakAngle (n > 1); for n = 1, sin; unbounded for 0 < n < 1.
+double vtkPhongGouraudBound::SlopeBeyond(const NearAngle& a, const Exponent& exponent)
+{
+  const double n = exponent.N;
+  if (!(n > 0.0) || a.Value >= HalfPi)
+  {
+    return 0.0;
+  }
+  if (n < 1.0)
+  {
+    return Infinite;
+  }
+  if (n == 1.0)
+  {
+    return 1.0;
+  }
+  return a.Value <= exponent.SlopePeakAngle ? n * exponent.SlopePeak : n * a.CosN / a.Cos * a.Sin;
+}
+
+//------------------------------------------------------------------------------
 // max(N.L, 0): the lobe bound with n = 1 (the terminator a kink), never more than the
 // term's largest value: for n = 1, Hs = cos(near), G1 = sin(min(far, pi/2)).
 double vtkPhongGouraudBound::DiffuseBound(
@@ -543,7 +602,7 @@ double vtkPhongGouraudBound::DiffuseBound(
 //------------------------------------------------------------------------------
 double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   const Exponent& exponent, const View& view, const Vector& d, const Vector& toLight,
-  const Halfway& halfway, double localView, bool gateCrosses)
+  const Halfway& halfway, const LocalView& localView, bool gateCrosses)
 {
   // The lobe's axis against the cell's normals: Blinn's H against N, or Phong's reflected
   // vector (which turns twice as far as N) against V.
@@ -557,7 +616,7 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
       return halfway.LobeZero ? 0.0 : Infinite;
     }
     width = cell.Cone + cell.Spread + view.Spread / halfway.Least;
-    spread = cell.Spread + localView / halfway.Least;
+    spread = cell.Spread + localView.Spread / halfway.Least;
   }
   else
   {
@@ -566,7 +625,7 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
       2.0 * c * d[2] - toLight[2] } };
     axis = view.Centre;
     width = 2.0 * (cell.Cone + cell.Spread) + view.Spread;
-    spread = 2.0 * cell.Spread + localView;
+    spread = 2.0 * cell.Spread + localView.Spread;
   }
   // Most cells lie beyond the lobe: told by a cosine, before any angle is taken. With
   // Cut <= pi/2, cos(Cut + width) >= cos(Cut) (1 - width^2 / 2) - sin(Cut) width, which needs
@@ -595,5 +654,12 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   {
     return largest;
   }
-  return std::min(largest, scale * LobeBound(Cap(spread), a, centre + width, exponent));
+  // The view vector's skew (MakeLocalView) turns the lobe's axis by that angle (Phong) or by
+  // at most that over |L + V| (Blinn: dH = dV across H / |L + V|); within the cell's angles,
+  // the lobe changes by at most its slope there times the turn.
+  // Phong's reflection of the interpolated normal turns it further (ReflectionSkew).
+  const double turn =
+    scene.Blinn ? localView.Skew / halfway.Least : localView.Skew + cell.ReflectionSkew;
+  const double skew = turn > 0.0 ? turn * SlopeBeyond(a, exponent) : 0.0;
+  return std::min(largest, scale * LobeBound(Cap(spread), a, centre + width, exponent) + skew);
 }

@@ -31,7 +31,9 @@
  * per frame and bounds every triangle of a cell at once (the cell's angles widen by its cone,
  * and in perspective by the view vector's cone over the cell's ball). Only directional lights
  * are bounded; a perspective view adds the view vector's spread over a triangle (first
- * order, with a margin of 1.1 checked by brute force in TestPhongGouraudBound).
+ * order, with a margin of 1.1 checked by brute force in TestPhongGouraudBound), and, proven,
+ * the turn of the lobe's axis by the skew of the interpolated view vector (MakeLocalView)
+ * and, for Phong, of the reflected interpolated normal (ReflectionSkew).
  */
 
 #ifndef vtkPhongGouraudBound_h
@@ -145,6 +147,7 @@ private:
     // Made once binning ends, since the bound needs them every frame:
     Cap Normals;                           ///< the cap of the largest radius, Spread
     double CosWidth = 1.0, SinWidth = 0.0; ///< of Cone + Spread, the normals' angles around Axis
+    double ReflectionSkew = 0.0;           ///< ReflectionSkew(Spread), Phong's reflected vector
   };
   /// The view vector over the whole surface: a cone, and the eye's least distance.
   struct View
@@ -163,6 +166,15 @@ private:
     bool Unbounded = false;
   };
   static bool MakeView(const Scene& scene, const Cell& cell, View& view);
+  /// The view vector over one triangle of a cell: its spread (the angular radius of its
+  /// vertices' directions) and its skew (how far a fragment's view vector is from the
+  /// normalized interpolation of the vertices' unit ones); both 0 in parallel projection.
+  struct LocalView
+  {
+    double Spread = 0.0;
+    double Skew = 0.0;
+  };
+  static LocalView MakeLocalView(const Scene& scene, const Cell& cell, const View& view);
   static Halfway MakeHalfway(const Scene& scene, const View& view, const Vector& toLight);
   /// The lobe's exponent n, and what depends on it alone: made once per bound.
   struct Exponent
@@ -191,9 +203,11 @@ private:
   static double LobeBound(
     const Cap& cap, const NearAngle& nearAngle, double farAngle, const Exponent& exponent);
   static double DiffuseBound(const Cap& normals, double cosNear, double sinFar, bool terminator);
+  static double SlopeBeyond(const NearAngle& a, const Exponent& exponent);
+  static double ReflectionSkew(double spread);
   static double SpecularBound(const Cell& cell, const Scene& scene, const Exponent& exponent,
     const View& view, const Vector& d, const Vector& toLight, const Halfway& halfway,
-    double localView, bool gateCrosses);
+    const LocalView& localView, bool gateCrosses);
   void AddPolygon(vtkIdType count, const vtkIdType* ids, vtkPoints* points, vtkDataArray* normals);
 
   std::vector<Cell> Cells;
