@@ -253,13 +253,9 @@ double vtkPhongErrorBudget::WholePowerError(const vtkPhongShaderPlan& plan, int 
   {
     return 0.0;
   }
-  int products = 1;
-  for (int k = n; k > 1; k >>= 1)
-  {
-    products += 2; // a squaring, and at most one product into the power
-  }
+  // The roundings, each raised to the factors it enters: n in all (the header).
   const double u = std::ldexp(1.0, -24);
-  const double gamma = products * u / (1.0 - products * u);
+  const double gamma = n * u / (1.0 - n * u);
   double weights[3][3];
   vtkPhongLightCulling::MaterialWeights(plan.FrontMaterial, plan.BackMaterial, weights);
   double specular = 0.0, lights = 0.0; // the largest specular, and all, contributions

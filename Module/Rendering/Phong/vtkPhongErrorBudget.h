@@ -45,9 +45,11 @@ public:
 
   /**
    * How far the picture may stray (linear colour) when the plan's lights raise their lobes to
-   * the whole shininess `n` by squaring instead of pow: each of at most 2 floor(log2 n) + 1
-   * products rounds once, a relative error of gamma = k u / (1 - k u) (u = 2^-24) on each
-   * lobe; and, the program not being the exact one, the rounding both make their own way:
+   * the whole shininess `n` by squaring instead of pow: each of its products rounds once
+   * (u = 2^-24), and each rounding is raised to the power of the factors it enters (a
+   * squaring's, for x^(2^b), 2^b - 1 of them; each product into the power, one): n in all, a
+   * relative error of gamma_n = n u / (1 - n u) on each lobe; and, the program not being the
+   * exact one, the rounding both make their own way:
    * the cosine's (8 u, which the lobe multiplies by up to n) and the lighting's (0.01 level
    * and 2e-5 of the lights' largest contributions, FloatMargin's). The contributions count
    * the lights' intensity, colours and largest attenuation, the materials' weights and the

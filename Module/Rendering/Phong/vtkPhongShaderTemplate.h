@@ -22,8 +22,9 @@
 #ifndef vtkPhongShaderTemplate_h
 #define vtkPhongShaderTemplate_h
 
-#include "vtkPhongShaderPlan.h" // for the plan
-#include "vtkShader.h"          // for vtkShader::Type
+#include "vtkPhongShaderPlan.h"      // for the plan
+#include "vtkRenderingPhongModule.h" // for the export macro
+#include "vtkShader.h"               // for vtkShader::Type
 
 #include <map>    // for std::map
 #include <string> // for std::string
@@ -48,6 +49,13 @@ public:
    * The lines of the named section that the plan keeps, placeholders filled in.
    */
   std::string Resolve(const char* templateText, const char* section, const Plan& plan) const;
+
+  /**
+   * The GLSL statements of phongWholePower that raise x to the whole power n by squaring into
+   * `power`: for each bit of n from the lowest, "power *= x; " where it is set and "x *= x; "
+   * before the next. Exported for TestPhongErrorBudget, which checks their rounding.
+   */
+  VTKRENDERINGPHONG_EXPORT static std::string WholePowerSteps(int n);
 
   /**
    * Substitute a handled plan's lighting code into the vertex, geometry and fragment shaders.
@@ -77,7 +85,6 @@ private:
   bool ReadDirective(const std::string& trimmed, const Plan& plan, Reading& reading) const;
   bool FeatureCondition(const std::string& condition, const Plan& plan, int lineNumber) const;
   void FillPlaceholders(std::string& line, const Plan& plan, int lineNumber) const;
-  static std::string WholePowerSteps(int n);
   static void DeclareInvariantPosition(std::map<vtkShader::Type, vtkShader*>& shaders);
   static bool UsesUniformColors(const std::string& fragmentSource);
   void SubstituteFragment(vtkShader* fragmentShader, const std::string& sums,
