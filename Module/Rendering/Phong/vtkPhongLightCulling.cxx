@@ -77,10 +77,25 @@ double AttenuationAt(vtkLight* light, double d)
   return 1.0 / std::max(k[0] + k[1] * d + k[2] * d * d, 1.0e-20);
 }
 
+// How near the light the shader may find a point of the box even where it lies `d` away: its
+// float distance rounds. 1e-6 of the largest coordinate (float resolves 6e-8 of it).
+double FloatReach(const double positionVC[3], const double box[6])
+{
+  double largest = 1.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    largest = std::max(
+      { largest, std::abs(positionVC[i]), std::abs(box[2 * i]), std::abs(box[2 * i + 1]) });
+  }
+  return 1.0e-6 * largest;
+}
+
 // The largest spot factor pow(cos_phi, exponent) (or 0 outside the cone) over the box's
-// bounding sphere. The sphere seen from the light spans a half-angle asin(r / distance);
-// the smallest angle to the axis is the centre's minus that. Outside the cone only by a
-// margin (0.01 degrees) counts as outside: the shader compares cosines in float.
+// bounding sphere. A light at a point of the box (to float's resolution) may have the
+// shader's distance 0 there, where it takes L = N and cos_phi = -N.axis, up to 1: then 1. The
+// sphere seen from the light spans a half-angle asin(r / distance); the smallest angle to the axis
+// is the centre's minus that. Outside the cone only by a margin (0.01 degrees) counts as outside:
+// the shader compares cosines in float.
 double SpotFactorBound(
   vtkLight* light, const double positionVC[3], const double axisVC[3], const double box[6])
 {
@@ -95,7 +110,8 @@ double SpotFactorBound(
   radius = std::sqrt(radius);
   const double distance = vtkMath::Norm(toCenter);
   const double axisLength = vtkMath::Norm(axisVC);
-  if (!(distance > radius) || !(axisLength > 0.0))
+  if (!(distance > radius) || !(axisLength > 0.0) ||
+    DistanceToBox(positionVC, box) <= FloatReach(positionVC, box))
   {
     return 1.0; // the light is inside the sphere, or has no axis
   }
@@ -208,8 +224,10 @@ double vtkPhongLightCulling::ContributionBound(vtkLight* light, bool isSpot,
     return 0.0;
   }
   const double spot = isSpot ? SpotFactorBound(light, lightPositionVC, spotAxisVC, boxVC) : 1.0;
-  return spot == 0.0 ? 0.0
-                     : spot * largest * AttenuationAt(light, DistanceToBox(lightPositionVC, boxVC));
+  // The nearest point's distance, less what the shader's float distance may lose.
+  const double nearest =
+    std::max(DistanceToBox(lightPositionVC, boxVC) - FloatReach(lightPositionVC, boxVC), 0.0);
+  return spot == 0.0 ? 0.0 : spot * largest * AttenuationAt(light, nearest);
 }
 
 //------------------------------------------------------------------------------

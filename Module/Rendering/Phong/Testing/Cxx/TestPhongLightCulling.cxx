@@ -7,14 +7,23 @@
 // Culling with a bound of 1 drops some of each sphere's own lights: it differs by more
 // than 0.5 / 255 (so the comparison would see a broken bound), but within 1. A frame rendered
 // again, or with a far light moved a little, compiles nothing; a zero bound culls nothing.
+// vtkPhongLightCulling::ContributionBound, on which culling rests, is also checked alone on
+// 100 000 random boxes per light kind (point, attenuated point, spot, spot with falloff and
+// attenuation), degenerate ones among them: at 30 points of each box, the light's largest
+// contribution there, evaluated in double as the shader does, never exceeds the bound.
 
 #include "vtkPhongReferenceTesting.h"
 
 #include "vtkCamera.h"
+#include "vtkLight.h"
 #include "vtkMath.h"
+#include "vtkPhongLightCulling.h"
+#include "vtkPhongLightGeometry.h"
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -36,6 +45,152 @@ double LargestDifference(vtkImageData* a, vtkImageData* b)
     }
   }
   return largest;
+}
+
+// A random box in view coordinates for ContributionBound: one in eight flat, one in sixteen a
+// point.
+void RandomBox(std::mt19937& random, double box[6])
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int shape = static_cast<int>(random() % 16);
+  for (int i = 0; i < 3; ++i)
+  {
+    const double centre = 10.0 * unit(random) - 5.0;
+    const double half =
+      shape == 0 || (shape < 3 && i == 0) ? 0.0 : std::pow(10.0, -3.0 + 3.5 * unit(random));
+    box[2 * i] = centre - half;
+    box[2 * i + 1] = centre + half;
+  }
+}
+
+// A point of the box: a corner (k < 8), else a random one.
+void PointOfBox(std::mt19937& random, const double box[6], int k, double p[3])
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 3; ++i)
+  {
+    const double t = k < 8 ? ((k >> i) & 1) : unit(random);
+    // Clamped: box[0] + 1 * (box[1] - box[0]) may round past box[1].
+    p[i] = std::min(box[2 * i] + t * (box[2 * i + 1] - box[2 * i]), box[2 * i + 1]);
+  }
+}
+
+// The light's largest contribution at p, per channel, as the shader evaluates it (in double)
+// with the normal and view that make N.L, the lobe and the gate 1 (N = L = V): A(d) spot
+// sum over terms of weight * colour * intensity.
+double ContributionAt(vtkLight* light, bool isSpot, const double position[3], const double axis[3],
+  const double p[3], const double weights[3][3])
+{
+  double toPoint[3] = { p[0] - position[0], p[1] - position[1], p[2] - position[2] };
+  const double d = vtkMath::Norm(toPoint);
+  double spot = 1.0;
+  if (isSpot && d > 0.0) // at d = 0 the shader takes L = N, and N = -axis gives cos_phi = 1
+  {
+    const double cosPhi = vtkMath::Dot(toPoint, axis) / d;
+    const double cosCutoff = std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()));
+    spot = cosPhi >= cosCutoff ? std::pow(std::max(cosPhi, 0.0), light->GetExponent()) : 0.0;
+  }
+  const double* k = light->GetAttenuationValues();
+  const double attenuation = 1.0 / std::max(k[0] + d * (k[1] + d * k[2]), 1.0e-20);
+  const double* colors[3] = { light->GetAmbientColor(), light->GetDiffuseColor(),
+    light->GetSpecularColor() };
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    double channel = 0.0;
+    for (int term = 0; term < 3; ++term)
+    {
+      channel += weights[term][c] *
+        vtkPhongLightGeometry::UploadedColor(colors[term][c], light->GetIntensity());
+    }
+    largest = std::max(largest, channel);
+  }
+  return attenuation * spot * largest;
+}
+
+// ContributionBound on `count` random boxes per light kind against ContributionAt at 30
+// points of each: the corners, the point nearest the light, random ones. The light lies in
+// the box in one case of eight and on its boundary in one of eight; a spot is aimed at the
+// box's centre in one case of four and at a corner in one of eight (the cone's edge across
+// the box), else anywhere.
+bool CheckContributionBound(int count)
+{
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const char* kinds[] = { "point", "attenuated point", "spot", "spot, falloff and attenuation" };
+  vtkNew<vtkLight> light;
+  light->SetPositional(true);
+  bool ok = true;
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    const bool isSpot = kind >= 2;
+    double tightest = 0.0;
+    for (int trial = 0; trial < count; ++trial)
+    {
+      double box[6], position[3], axis[3], weights[3][3];
+      RandomBox(random, box);
+      const int where = static_cast<int>(random() % 8);
+      PointOfBox(random, box, where == 0 ? 8 : static_cast<int>(random() % 8), position);
+      for (int i = 0; i < 3 && where > 1; ++i)
+      {
+        position[i] = where == 1 ? position[i] : 20.0 * unit(random) - 10.0;
+      }
+      double target[3];
+      PointOfBox(random, box, trial % 8 == 0 ? static_cast<int>(random() % 8) : 8, target);
+      const bool aimed = trial % 4 == 0 || trial % 8 == 1;
+      for (int i = 0; i < 3; ++i)
+      {
+        const double centre = 0.5 * (box[2 * i] + box[2 * i + 1]);
+        axis[i] = aimed ? (trial % 4 == 0 ? centre : target[i]) - position[i] : unit(random) - 0.5;
+      }
+      if (!(vtkMath::Normalize(axis) > 0.0))
+      {
+        axis[0] = 1.0;
+      }
+      light->SetConeAngle(1.0 + 88.9 * unit(random));
+      light->SetExponent(kind == 3 ? 20.0 * unit(random) * unit(random) : 1.0);
+      const bool attenuated = kind == 1 || kind == 3;
+      light->SetAttenuationValues(attenuated ? (trial % 16 == 0 ? 0.0 : 2.0 * unit(random)) : 1.0,
+        attenuated ? unit(random) : 0.0, attenuated ? unit(random) : 0.0);
+      light->SetIntensity(2.0 * unit(random));
+      light->SetAmbientColor(unit(random), unit(random), unit(random));
+      light->SetDiffuseColor(unit(random), unit(random), unit(random));
+      light->SetSpecularColor(unit(random), unit(random), unit(random));
+      for (auto& term : weights)
+      {
+        for (double& weight : term)
+        {
+          weight = 2.0 * unit(random);
+        }
+      }
+      const double bound =
+        vtkPhongLightCulling::ContributionBound(light, isSpot, position, axis, box, weights);
+      for (int k = 0; k < 30; ++k)
+      {
+        double p[3];
+        PointOfBox(random, box, k, p);
+        if (k == 8) // the point of the box nearest the light
+        {
+          for (int i = 0; i < 3; ++i)
+          {
+            p[i] = std::min(std::max(position[i], box[2 * i]), box[2 * i + 1]);
+          }
+        }
+        const double actual = ContributionAt(light, isSpot, position, axis, p, weights);
+        tightest = bound > 0.0 ? std::max(tightest, actual / bound) : tightest;
+        if (!(actual <= bound * (1.0 + 1.0e-12)))
+        {
+          std::cerr << kinds[kind] << ", box " << trial << ": " << actual << " at a point > bound "
+                    << bound << "\n";
+          ok = false;
+          break;
+        }
+      }
+    }
+    std::cout << kinds[kind] << ": " << count << " random boxes, largest contribution / bound "
+              << tightest << "\n";
+  }
+  return ok;
 }
 
 struct CullingScene
@@ -111,6 +266,7 @@ struct CullingScene
 int TestPhongLightCulling(int, char*[])
 {
   vtkPhongTest::Checks checks;
+  checks.Expect(CheckContributionBound(100000), "each light's contribution within its bound");
   CullingScene scene;
 
   const auto all = scene.Render(0.0);
