@@ -14,24 +14,35 @@
 #include "vtkPhongReferenceTesting.h"
 
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkIdList.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricTorus.h"
 #include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongLightingSettings.h"
 #include "vtkPhongOFFReader.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPhongProperty.h"
 #include "vtkPhongShaderTemplate.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkTessellatedBoxSource.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
+#include "vtkTriangle.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -649,6 +660,298 @@ bool CheckWholePowerRounding()
   return ok;
 }
 
+// Issue 27's scene matrix, every pair of its factors' values in at least one scene (a greedy
+// pairwise cover; the whole product is 72 576 scenes): the mesh (sphere 64 and 256, torus 128,
+// CGAL's bunny00 and refined_elephant with normals the mapper computes, a box), the lights (a
+// headlight, 8 directional, 8 mixed, 32 mixed, spots with hard and with soft edges, a point
+// light just off the surface), n in {1, 10, 40, 200, 1e3, 1e4}, Phong or Blinn, plain or
+// normalized, one- or two-sided, parallel or perspective, median triangles of about 0.5, 4
+// and 30 px, budgets of 0.25, 0.5, 1 and 2 levels. Every frame within its budget.
+struct MatrixScene
+{
+  int Mesh, Lights, Shininess, Blinn, Normalized, TwoSided, Perspective, Size, Budget;
+};
+
+const char* MatrixMeshes[] = { "sphere 64", "sphere 256", "torus 128", "bunny00",
+  "refined_elephant", "box" };
+const char* MatrixLights[] = { "headlight", "8 directional", "8 mixed", "32 mixed", "hard spots",
+  "soft spots", "near point" };
+const double MatrixShininess[] = { 1.0, 10.0, 40.0, 200.0, 1.0e3, 1.0e4 };
+const double MatrixSizes[] = { 0.5, 4.0, 30.0 };
+const double MatrixBudgets[] = { 0.25, 0.5, 1.0, 2.0 };
+
+// Greedy: each scene the one of 64 random candidates that covers the most pairs not yet
+// covered, until every pair is.
+std::vector<MatrixScene> PairwiseScenes()
+{
+  const std::array<int, 9> levels = { 6, 7, 6, 2, 2, 2, 2, 3, 4 };
+  std::vector<std::vector<std::vector<char>>> covered(9);
+  int uncovered = 0;
+  for (int a = 0; a < 9; ++a)
+  {
+    covered[a].resize(9);
+    for (int b = a + 1; b < 9; ++b)
+    {
+      covered[a][b].assign(levels[a] * levels[b], 0);
+      uncovered += levels[a] * levels[b];
+    }
+  }
+  std::mt19937 random(2711);
+  std::vector<MatrixScene> scenes;
+  while (uncovered > 0)
+  {
+    std::array<int, 9> best{};
+    int bestGain = -1;
+    for (int candidate = 0; candidate < 64; ++candidate)
+    {
+      std::array<int, 9> values;
+      for (int a = 0; a < 9; ++a)
+      {
+        values[a] = static_cast<int>(random() % levels[a]);
+      }
+      int gain = 0;
+      for (int a = 0; a < 9; ++a)
+      {
+        for (int b = a + 1; b < 9; ++b)
+        {
+          gain += covered[a][b][values[a] * levels[b] + values[b]] ? 0 : 1;
+        }
+      }
+      if (gain > bestGain)
+      {
+        bestGain = gain;
+        best = values;
+      }
+    }
+    for (int a = 0; a < 9; ++a)
+    {
+      for (int b = a + 1; b < 9; ++b)
+      {
+        char& pair = covered[a][b][best[a] * levels[b] + best[b]];
+        uncovered -= pair ? 0 : 1;
+        pair = 1;
+      }
+    }
+    scenes.push_back(
+      { best[0], best[1], best[2], best[3], best[4], best[5], best[6], best[7], best[8] });
+  }
+  return scenes;
+}
+
+// The matrix's meshes, centred at the origin with a bounding radius of 1.
+vtkSmartPointer<vtkPolyData> MatrixMesh(int mesh, const std::string& meshDirectory)
+{
+  vtkSmartPointer<vtkPolyData> shape;
+  if (mesh <= 1)
+  {
+    shape = vtkPhongTest::MakeSphere(mesh == 0 ? 64 : 256, 1.0);
+  }
+  else if (mesh == 2)
+  {
+    vtkNew<vtkParametricTorus> torus;
+    torus->SetRingRadius(0.7);
+    torus->SetCrossSectionRadius(0.3);
+    vtkNew<vtkParametricFunctionSource> source;
+    source->SetParametricFunction(torus);
+    source->SetUResolution(128);
+    source->SetVResolution(64);
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputConnection(source->GetOutputPort());
+    normals->SplittingOff();
+    normals->Update();
+    shape = normals->GetOutput();
+  }
+  else if (mesh <= 4)
+  {
+    vtkNew<vtkPhongOFFReader> reader;
+    reader->SetFileName(
+      (meshDirectory + (mesh == 3 ? "/bunny00.off" : "/refined_elephant.off")).c_str());
+    reader->Update();
+    shape = reader->GetOutput();
+  }
+  else
+  {
+    // Faces of 16 x 16 squares, each face's points its own (flat normals, sharp edges).
+    vtkNew<vtkTessellatedBoxSource> box;
+    box->SetLevel(16);
+    box->QuadsOff();
+    box->DuplicateSharedPointsOn();
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputConnection(box->GetOutputPort());
+    normals->SplittingOff();
+    normals->Update();
+    shape = normals->GetOutput();
+  }
+  double bounds[6];
+  shape->GetBounds(bounds);
+  vtkNew<vtkTransform> fit;
+  const double radius = 0.5 * std::sqrt(vtkMath::Distance2BetweenPoints(bounds, bounds + 3));
+  fit->Scale(1.0 / radius, 1.0 / radius, 1.0 / radius);
+  fit->Translate(
+    -0.5 * (bounds[0] + bounds[1]), -0.5 * (bounds[2] + bounds[3]), -0.5 * (bounds[4] + bounds[5]));
+  vtkNew<vtkTransformPolyDataFilter> filter;
+  filter->SetTransform(fit);
+  filter->SetInputData(shape);
+  filter->Update();
+  return filter->GetOutput();
+}
+
+// The median triangle area of a mesh (its polygons fanned as VTK draws them).
+double MedianTriangleArea(vtkPolyData* mesh)
+{
+  std::vector<double> areas;
+  vtkNew<vtkIdList> ids;
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    polys->GetCurrentCell(ids);
+    double p0[3], p1[3], p2[3];
+    mesh->GetPoint(ids->GetId(0), p0);
+    for (vtkIdType t = 1; t + 1 < ids->GetNumberOfIds(); ++t)
+    {
+      mesh->GetPoint(ids->GetId(t), p1);
+      mesh->GetPoint(ids->GetId(t + 1), p2);
+      areas.push_back(vtkTriangle::TriangleArea(p0, p1, p2));
+    }
+  }
+  std::nth_element(areas.begin(), areas.begin() + areas.size() / 2, areas.end());
+  return areas[areas.size() / 2];
+}
+
+// The matrix's light sets around a mesh of radius 1 at the origin; `top` the mesh's point
+// nearest +z's axis from above (the near point light sits just off it).
+void AddMatrixLights(vtkPhongTest::Scene& view, int set, const double top[3])
+{
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  if (set == 0)
+  {
+    vtkPhongTest::AddLight(view, origin, origin, white, false, VTK_LIGHT_TYPE_HEADLIGHT);
+    return;
+  }
+  if (set == 6)
+  {
+    const double near[3] = { 1.04 * top[0], 1.04 * top[1], 1.04 * top[2] + 0.02 };
+    vtkPhongTest::AddLight(view, near, origin, white, true)->SetIntensity(0.3);
+    const double key[3] = { 1.0, 1.0, 2.0 };
+    vtkPhongTest::AddLight(view, key, origin, white, false)->SetIntensity(0.5);
+    return;
+  }
+  const int count = set == 3 ? 32 : set <= 2 ? 8 : 3;
+  for (int i = 0; i < count; ++i)
+  {
+    const double angle = 6.283185307 * i / count + 0.3;
+    const double color[3] = { 0.6 + 0.4 * std::cos(angle), 0.8, 0.6 + 0.4 * std::sin(angle) };
+    // Directional first, then points, then spots (mixed: half, a quarter, a quarter).
+    const bool spot = set >= 4 || (set >= 2 && 4 * i >= 3 * count);
+    const bool point = !spot && set >= 2 && 2 * i >= count;
+    const double distance = spot ? 3.0 : 2.1;
+    const double position[3] = { distance * std::cos(angle), distance * std::sin(angle), distance };
+    // Spots aimed off the centre, so that their cones' edges cross the mesh.
+    const double aim[3] = { 0.5 * std::cos(angle + 1.0), 0.5 * std::sin(angle + 1.0), 0.0 };
+    vtkLight* light =
+      vtkPhongTest::AddLight(view, position, spot ? aim : origin, color, spot || point);
+    light->SetIntensity((set >= 4 ? 1.2 : 2.0) / count);
+    light->SetConeAngle(spot ? 14.0 : 180.0);
+    light->SetExponent(spot ? 2.0 : 1.0);
+    if (point || spot)
+    {
+      light->SetAttenuationValues(0.5, 0.1, 0.05);
+    }
+  }
+}
+
+bool RunMatrixScene(const MatrixScene& m, vtkPolyData* mesh, double medianArea, int index)
+{
+  constexpr int Pixels = 400;
+  vtkPhongTest::Scene view(Pixels, Pixels);
+  view.Renderer->AutomaticLightCreationOff();
+  view.Renderer->SetAmbient(0.15, 0.15, 0.15);
+  view.Renderer->SetTwoSidedLighting(m.TwoSided != 0);
+  double bounds[6], top[3] = { 0.0, 0.0, 1.0 };
+  mesh->GetBounds(bounds);
+  double highest = -1.0e300;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    if (p[0] * p[0] + p[1] * p[1] < 0.04 && p[2] > highest)
+    {
+      highest = p[2];
+      std::copy(p, p + 3, top);
+    }
+  }
+  AddMatrixLights(view, m.Lights, top);
+  vtkNew<vtkPhongProperty> material;
+  material->SetColor(0.8, 0.6, 0.4);
+  material->SetAmbient(0.2);
+  material->SetDiffuse(0.7);
+  material->SetSpecular(0.5);
+  material->SetShininess(MatrixShininess[m.Shininess]);
+  material->SetLightingModel(m.Normalized
+      ? (m.Blinn ? vtkPhongProperty::NormalizedBlinnPhong : vtkPhongProperty::NormalizedPhong)
+      : (m.Blinn ? vtkPhongProperty::BlinnPhong : vtkPhongProperty::Phong));
+  material->SetInterpolationToPhong();
+  material->SetSoftSpotEdge(m.Lights == 5);
+  vtkActor* actor = vtkPhongTest::AddActor(view, mesh, material);
+  const double budget = MatrixBudgets[m.Budget];
+  vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper())->SetErrorBudget(budget);
+  // Pixels per unit at the surface facing the camera that make the median triangle, about 0.6
+  // of its area facing the view, cover the size wanted.
+  const double perUnit = std::sqrt(MatrixSizes[m.Size] / (0.6 * medianArea));
+  vtkCamera* camera = view.Renderer->GetActiveCamera();
+  const double direction[3] = { 0.30, 0.25, 0.92 };
+  const double surface = 1.0; // the mesh's bounding radius: its nearest surface is within it
+  const double distance = m.Perspective ? surface +
+      std::max(Pixels / (2.0 * std::tan(vtkMath::RadiansFromDegrees(15.0)) * perUnit), 0.3)
+                                        : 4.0;
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(distance * direction[0], distance * direction[1], distance * direction[2]);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(30.0);
+  camera->SetParallelProjection(m.Perspective == 0);
+  camera->SetParallelScale(Pixels / (2.0 * perUnit));
+  view.Renderer->ResetCameraClippingRange();
+  const Outcome outcome = Measure(view, actor, budget);
+  std::cout << "matrix " << index << ": " << MatrixMeshes[m.Mesh] << ", " << MatrixLights[m.Lights]
+            << ", n " << MatrixShininess[m.Shininess] << (m.Normalized ? " normalized" : "")
+            << (m.Blinn ? " Blinn" : " Phong") << (m.TwoSided ? ", two-sided" : ", one-sided")
+            << (m.Perspective ? ", perspective" : ", parallel") << ", about " << MatrixSizes[m.Size]
+            << " px triangles, budget " << budget << ": " << ModeNames[outcome.Chosen] << ", bound "
+            << outcome.Bound << ", error " << outcome.Error << " over " << outcome.Pixels
+            << " pixels\n";
+  const bool ok =
+    outcome.Valid && outcome.Error <= budget && outcome.Bound <= budget && outcome.Pixels > 0;
+  if (!ok)
+  {
+    std::cerr << "matrix scene " << index << " broke its budget (or drew nothing); "
+              << outcome.Signature << "\n";
+  }
+  return ok;
+}
+
+bool RunMatrix(const std::string& meshDirectory)
+{
+  const std::vector<MatrixScene> scenes = PairwiseScenes();
+  std::vector<vtkSmartPointer<vtkPolyData>> meshes;
+  std::vector<double> medianAreas;
+  for (int mesh = 0; mesh < 6; ++mesh)
+  {
+    meshes.push_back(MatrixMesh(mesh, meshDirectory));
+    medianAreas.push_back(MedianTriangleArea(meshes.back()));
+  }
+  bool ok = true;
+  int chosen[3] = { 0, 0, 0 };
+  for (std::size_t i = 0; i < scenes.size(); ++i)
+  {
+    ok = RunMatrixScene(
+           scenes[i], meshes[scenes[i].Mesh], medianAreas[scenes[i].Mesh], static_cast<int>(i)) &&
+      ok;
+  }
+  std::cout << "scene matrix: " << scenes.size() << " scenes cover every pair of values\n";
+  return ok;
+}
+
 int Option(int argc, char* argv[], const char* flag, int fallback)
 {
   for (int i = 1; i + 1 < argc; ++i)
@@ -735,5 +1038,10 @@ int TestPhongErrorBudget(int argc, char* argv[])
          reader->GetOutput()) &&
     ok;
   ok = RunOrbit(Option(argc, argv, "--orbit", 120)) && ok;
+  if (Option(argc, argv, "--matrix", 1) != 0)
+  {
+    const std::string file = argv[1];
+    ok = RunMatrix(file.substr(0, file.find_last_of('/'))) && ok;
+  }
   return ok ? 0 : 1;
 }
