@@ -527,7 +527,7 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, c
 // interpolation u(b) of the unit vectors v_i that the cap model takes: with e_i = d_i / d_min - 1
 // in [0, delta], delta <= 2r / D, w(b) / d_min = u + e for e = sum b_i e_i v_i, and
 // |u + e| >= cos(rho) (along the cone's axis), |e across u| <= delta sin(2 rho), so the angle
-// between them has a sine of at most 2 delta sin(rho) <= 4 r^2 / D^2 (Skew; while rho <= pi/4).
+// between them has a sine of at most 2 delta sin(rho) <= 4 r^2 / D^2 (Skew; for r / D < 1/2).
 vtkPhongGouraudBound::LocalView vtkPhongGouraudBound::MakeLocalView(
   const Scene& scene, const Cell& cell, const View& view)
 {
@@ -537,13 +537,16 @@ vtkPhongGouraudBound::LocalView vtkPhongGouraudBound::MakeLocalView(
     return local;
   }
   const double sine = cell.Radius / view.Nearest;
-  if (!(sine < std::sqrt(0.5)))
+  if (!(sine < 0.5))
   {
     local.Spread = local.Skew = Infinite;
     return local;
   }
   local.Spread = std::asin(sine);
-  local.Skew = std::asin(std::min(4.0 * sine * sine, 1.0));
+  // The angle's sine y is below 1 here (sine < 0.5); tan(asin y) = y / sqrt(1 - y^2) bounds the
+  // angle without a second arcsine per cell.
+  const double skewSine = 4.0 * sine * sine;
+  local.Skew = skewSine / std::sqrt(1.0 - skewSine * skewSine);
   return local;
 }
 
