@@ -48,6 +48,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -603,6 +604,20 @@ inline bool StrictlyMatchesBaseline(int argc, char* argv[], vtkRenderWindow* win
     WriteStrictDifference(testing, closestFile, rendered, closest);
   }
   return false;
+}
+
+// The integer after `flag` among the test's arguments (`--seed 7`), else `fallback`: for
+// tests whose long runs (./vtkphong.sh) take more scenes than ctest's.
+inline int IntegerOption(int argc, char* argv[], const char* flag, int fallback)
+{
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::string(argv[i]) == flag)
+    {
+      return std::atoi(argv[i + 1]);
+    }
+  }
+  return fallback;
 }
 
 // Compare with the baseline (VTK's harness, then strictly) and check GL

@@ -952,17 +952,6 @@ bool RunMatrix(const std::string& meshDirectory)
   return ok;
 }
 
-int Option(int argc, char* argv[], const char* flag, int fallback)
-{
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::string(argv[i]) == flag)
-    {
-      return std::atoi(argv[i + 1]);
-    }
-  }
-  return fallback;
-}
 }
 
 int TestPhongErrorBudget(int argc, char* argv[])
@@ -1034,11 +1023,11 @@ int TestPhongErrorBudget(int argc, char* argv[])
     ok = RunCase(c, reader->GetOutput()) && ok;
   }
   // ctest runs a quick, fixed-seed subset; ./vtkphong.sh budget-sweep runs 1000 scenes.
-  ok = RunRandom(Option(argc, argv, "--random", 40), Option(argc, argv, "--seed", 27),
-         reader->GetOutput()) &&
+  ok = RunRandom(vtkPhongTest::IntegerOption(argc, argv, "--random", 40),
+         vtkPhongTest::IntegerOption(argc, argv, "--seed", 27), reader->GetOutput()) &&
     ok;
-  ok = RunOrbit(Option(argc, argv, "--orbit", 120)) && ok;
-  if (Option(argc, argv, "--matrix", 1) != 0)
+  ok = RunOrbit(vtkPhongTest::IntegerOption(argc, argv, "--orbit", 120)) && ok;
+  if (vtkPhongTest::IntegerOption(argc, argv, "--matrix", 1) != 0)
   {
     const std::string file = argv[1];
     ok = RunMatrix(file.substr(0, file.find_last_of('/'))) && ok;

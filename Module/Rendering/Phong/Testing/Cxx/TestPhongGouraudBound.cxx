@@ -9,6 +9,7 @@
 // directional lights and headlights; --triangles N sets the count). Prints how tight the
 // bounds are.
 #include "vtkPhongGouraudBound.h"
+#include "vtkPhongTestUtilities.h"
 
 #include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
@@ -569,17 +570,6 @@ bool CheckRandomTriangles(std::mt19937& random, int perLobe, double& tightest)
   return ok;
 }
 
-int Option(int argc, char* argv[], const char* flag, int fallback)
-{
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::string(argv[i]) == flag)
-    {
-      return std::atoi(argv[i + 1]);
-    }
-  }
-  return fallback;
-}
 }
 
 int TestPhongGouraudBound(int argc, char* argv[])
@@ -592,8 +582,8 @@ int TestPhongGouraudBound(int argc, char* argv[])
   // Their own generator: the scenes below stay those of the earlier test.
   std::mt19937 triangles(20261128);
   double tightestTriangle = 0.0;
-  ok =
-    CheckRandomTriangles(triangles, Option(argc, argv, "--triangles", 100000), tightestTriangle) &&
+  ok = CheckRandomTriangles(triangles,
+         vtkPhongTest::IntegerOption(argc, argv, "--triangles", 100000), tightestTriangle) &&
     ok;
   std::cout << "random triangles: largest actual/bound " << tightestTriangle << "\n";
 
