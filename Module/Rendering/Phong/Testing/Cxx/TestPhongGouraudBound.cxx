@@ -218,6 +218,17 @@ vtkSmartPointer<vtkPolyData> MakeMesh(int kind, std::mt19937& random)
   return mesh;
 }
 
+// A directional light of a random direction, its diffuse and specular strengths drawn from
+// `strength`.
+Scene::Light RandomLight(std::mt19937& random, std::uniform_real_distribution<double>& strength)
+{
+  Scene::Light light;
+  light.ToLightMC = RandomDirection(random);
+  light.Diffuse = strength(random);
+  light.Specular = strength(random);
+  return light;
+}
+
 // Scene `index` of the sequence; the eye at 2 to 8 times `scale` from `centre`.
 Scene RandomScene(std::mt19937& random, int index, const double centre[3], double scale)
 {
@@ -232,11 +243,7 @@ Scene RandomScene(std::mt19937& random, int index, const double centre[3], doubl
   const int lights = 1 + index % 4;
   for (int i = 0; i < lights; ++i)
   {
-    Scene::Light light;
-    light.ToLightMC = RandomDirection(random);
-    light.Diffuse = uniform(random);
-    light.Specular = uniform(random);
-    scene.Lights.push_back(light);
+    scene.Lights.push_back(RandomLight(random, uniform));
   }
   scene.ToEyeMC = RandomDirection(random);
   const double distance = 2.0 + 6.0 * uniform(random);
@@ -462,11 +469,7 @@ Scene RandomTriangleScene(std::mt19937& random, bool blinn, const Vector& axis, 
   const int lights = 1 + static_cast<int>(random() % 3);
   for (int i = 0; i < lights; ++i)
   {
-    Scene::Light light;
-    light.ToLightMC = RandomDirection(random);
-    light.Diffuse = unit(random);
-    light.Specular = unit(random);
-    scene.Lights.push_back(light);
+    scene.Lights.push_back(RandomLight(random, unit));
   }
   if (random() % 4 == 0)
   {
