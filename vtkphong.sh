@@ -12,9 +12,9 @@
 #                          comma-separated sizes given), with and without input normals
 #                          (docs/results/performance.md)
 #   ./vtkphong.sh budget-sweep [count] [seed]
-#                          the error budget on 1000 random scenes (or count) and a 360-frame
-#                          orbit, every frame within its budget (ctest runs 40 and 120;
-#                          docs/lighting-model.md)
+#                          the error budget on 1000 random scenes (or count), a 360-frame
+#                          orbit and the 51-scene matrix, every frame within its budget
+#                          (ctest runs 40, 120 and the matrix; docs/lighting-model.md)
 #   ./vtkphong.sh extremes run the numerical-stability suite (float GPU against
 #                          the double-precision reference) and print its table
 #   ./vtkphong.sh study    regenerate the speed/accuracy trade study
