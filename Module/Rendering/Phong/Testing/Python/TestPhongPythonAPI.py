@@ -56,6 +56,21 @@ mapper.SetDebugLightIndex(3)
 checks.expect(mapper.GetDebugLightIndex() == 3, "debug light index")
 checks.expect(mapper.GetShaderCompileCount() == 0 and mapper.GetNumberOfShaderVariants() == 0,
               "no shader before the first render")
+# The error budget and what it chose, on both mappers (the enum on each, as the settings'),
+# before any render: the exact mode's report.
+for budgeted in (mapper, vtkphong.vtkPhongCompositePolyDataMapper()):
+    kind = type(budgeted).__name__
+    checks.expect(budgeted.GetErrorBudget() == 0.0, kind + ": default budget 0, the exact mode")
+    budgeted.SetErrorBudget(1.5)
+    checks.expect(budgeted.GetErrorBudget() == 1.5, kind + ": budget round trip")
+    budgeted.SetErrorBudget(0.0)
+    checks.expect((type(budgeted).BudgetPerFragment, type(budgeted).BudgetSpecularPerVertex,
+                   type(budgeted).BudgetPerVertex) == (0, 1, 2) and
+                  vtkphong.vtkPhongLightingSettings.BudgetPerVertex == 2, kind + ": budget modes")
+    checks.expect(budgeted.GetBudgetMode() == 0 and
+                  budgeted.GetBudgetModeAsString() == "per fragment" and
+                  budgeted.GetSquaredShininess() == 0 and budgeted.GetErrorBound() == 0.0,
+                  kind + ": nothing spent before a render")
 normals = vtkphong.vtkOpenMeshNormals()
 for method in ("SetFeatureAngle", "SetSplitting", "SetConsistency", "SetAutoOrientNormals",
                "SetComputePointNormals", "SetComputeCellNormals", "SetFlipNormals",
