@@ -180,14 +180,15 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
   SetTermFeatures(terms, plan);
   SetLightFeatures(terms, allFeatures, plan);
   SetMaterialFeatures(terms, allFeatures, plan);
-  const auto budgetMode = BudgetChoosesMode(ren, actor, terms, state, options, plan);
+  const Squaring squaring = SquaringOf(terms, options, plan);
+  const auto budgetMode = BudgetChoosesMode(ren, actor, terms, state, options, squaring, plan);
   plan.BudgetMode = static_cast<int>(budgetMode);
   plan.Features.Set(Feature::DebugBudget, plan.DebugView == View::BudgetUse);
   const bool perVertex =
     SetInterpolationFeatures(terms, state, geometryView, budgetMode, ren, plan);
   plan.Features.Set(
     Feature::SpecularAntiAliasing, terms.Specular && !perVertex && options.SpecularAntiAliasing);
-  SetWholeShininessFeature(terms, options, plan);
+  SetWholeShininessFeature(squaring, options, plan);
   plan.BudgetShare = options.ErrorBudget > 0.0 ? plan.ErrorBound / options.ErrorBudget : 0.0;
   SetNormalFeatures(terms, state, perVertex, allFeatures, plan);
   if (this->InterpolatedDotLights == 0)
@@ -410,7 +411,7 @@ void vtkPhongShaderPlanner::SetMaterialFeatures(const Terms& terms, bool allFeat
 // in the final view (or the BudgetUse view of it), with what light culling left of the budget.
 vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer* ren,
   vtkActor* actor, const Terms& terms, const PrimitiveState& state, const Options& options,
-  Plan& plan)
+  const Squaring& squaring, Plan& plan)
 {
   using Mode = vtkPhongGouraudBound::Mode;
   vtkPhongGouraudBound* triangles = state.Triangles;
@@ -425,12 +426,9 @@ vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer*
   }
   // Per fragment, would the lobes be squared? Then the specular sums per vertex pay only for
   // many lobes (vtkPhongErrorBudget::ChooseMode).
-  const int n = SquarableShininess(terms, options, plan);
-  const bool squared =
-    n > 0 && plan.ErrorBound + vtkPhongErrorBudget::WholePowerError(plan, n) <= options.ErrorBudget;
   double bound = 0.0;
   triangles->Chosen = vtkPhongErrorBudget::ChooseMode(ren, actor, plan, *triangles,
-    options.ErrorBudget - plan.ErrorBound, triangles->Chosen, squared, bound);
+    options.ErrorBudget - plan.ErrorBound, triangles->Chosen, squaring.Fits(plan, options), bound);
   plan.ErrorBound += bound;
   return triangles->Chosen;
 }
@@ -551,26 +549,38 @@ std::size_t vtkPhongShaderPlanner::MaximumInterpolatedDotLights()
 // shininess varies per fragment, nor above 1e3 (NARROW_LOBE). Each shininess is its own
 // program, compiled once and cached.
 void vtkPhongShaderPlanner::SetWholeShininessFeature(
-  const Terms& terms, const Options& options, Plan& plan)
+  const Squaring& squaring, const Options& options, Plan& plan)
 {
-  const int n = SquarableShininess(terms, options, plan);
-  const double error = n > 0 ? vtkPhongErrorBudget::WholePowerError(plan, n) : 0.0;
-  const bool whole = n > 0 && plan.ErrorBound + error <= options.ErrorBudget;
+  const bool whole = squaring.Fits(plan, options);
   plan.Features.Set(Feature::WholeShininess, whole);
-  plan.WholeShininess = whole ? n : 0;
-  plan.ErrorBound += whole ? error : 0.0;
+  plan.WholeShininess = whole ? squaring.Shininess : 0;
+  plan.ErrorBound += whole ? squaring.Error : 0.0;
 }
 
 //------------------------------------------------------------------------------
-// The shininess SetWholeShininessFeature may square, its charge aside; else 0.
-int vtkPhongShaderPlanner::SquarableShininess(
+// The shininess SetWholeShininessFeature may square and its charge, made once per plan: the
+// mode's choice asks whether the squaring would fit before it spends its own bound.
+vtkPhongShaderPlanner::Squaring vtkPhongShaderPlanner::SquaringOf(
   const Terms& terms, const Options& options, const Plan& plan)
 {
   const double n = vtkPhongMaterial::ShininessOf(plan.FrontMaterial);
   const bool whole = options.ErrorBudget > 0.0 && options.Specialize && terms.Specular &&
     !plan.Has(Feature::NarrowLobe) && !options.SpecularAntiAliasing && n >= 2.0 && n <= 1.0e3 &&
     n == std::floor(n) && vtkPhongMaterial::ShininessOf(plan.BackMaterial) == n;
-  return whole ? static_cast<int>(n) : 0;
+  Squaring squaring;
+  if (whole)
+  {
+    squaring.Shininess = static_cast<int>(n);
+    squaring.Error = vtkPhongErrorBudget::WholePowerError(plan, squaring.Shininess);
+  }
+  return squaring;
+}
+
+//------------------------------------------------------------------------------
+// Whether the squaring's charge fits what is left of the budget.
+bool vtkPhongShaderPlanner::Squaring::Fits(const Plan& plan, const Options& options) const
+{
+  return this->Shininess > 0 && plan.ErrorBound + this->Error <= options.ErrorBudget;
 }
 
 //------------------------------------------------------------------------------

@@ -85,16 +85,25 @@ private:
   static bool HasSeparateSpecularColors(const Terms& terms, bool allFeatures, const Plan& plan);
   static void SetMaterialFeatures(const Terms& terms, bool allFeatures, Plan& plan);
   static bool DrawnUnderShadowMaps(vtkActor* actor);
+  /// A whole shininess the lobe may raise by squaring (0: none) and that squaring's charge.
+  struct Squaring
+  {
+    int Shininess = 0;
+    double Error = 0.0;
+    bool Fits(const Plan& plan, const Options& options) const;
+  };
+  static Squaring SquaringOf(const Terms& terms, const Options& options, const Plan& plan);
   static vtkPhongGouraudBound::Mode BudgetChoosesMode(vtkRenderer* ren, vtkActor* actor,
-    const Terms& terms, const PrimitiveState& state, const Options& options, Plan& plan);
+    const Terms& terms, const PrimitiveState& state, const Options& options,
+    const Squaring& squaring, Plan& plan);
   static bool SetInterpolationFeatures(const Terms& terms, const PrimitiveState& state,
     bool geometryView, vtkPhongGouraudBound::Mode budgetMode, vtkRenderer* ren, Plan& plan);
   static void SetNormalFeatures(
     const Terms& terms, const PrimitiveState& state, bool perVertex, bool allFeatures, Plan& plan);
   static void SetInterpolatedDotsFeature(
     const PrimitiveState& state, bool allowed, std::size_t maximumLights, Plan& plan);
-  static void SetWholeShininessFeature(const Terms& terms, const Options& options, Plan& plan);
-  static int SquarableShininess(const Terms& terms, const Options& options, const Plan& plan);
+  static void SetWholeShininessFeature(
+    const Squaring& squaring, const Options& options, Plan& plan);
   static std::string MakeSignature(const Plan& plan, bool allFeatures);
 
   PlaceholderLights Placeholders;
