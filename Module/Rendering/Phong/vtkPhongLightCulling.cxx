@@ -91,13 +91,13 @@ double FloatReach(const double positionVC[3], const double box[6])
 }
 
 // The largest spot factor pow(cos_phi, exponent) (or 0 outside the cone) over the box's
-// bounding sphere. A light at a point of the box (to float's resolution) may have the
-// shader's distance 0 there, where it takes L = N and cos_phi = -N.axis, up to 1: then 1. The
-// sphere seen from the light spans a half-angle asin(r / distance); the smallest angle to the axis
-// is the centre's minus that. Outside the cone only by a margin (0.01 degrees) counts as outside:
-// the shader compares cosines in float.
-double SpotFactorBound(
-  vtkLight* light, const double positionVC[3], const double axisVC[3], const double box[6])
+// bounding sphere, the shader's least distance to the box being `nearest`. Where that may be 0
+// (a light at a point of the box, to float's resolution) the shader takes L = N and
+// cos_phi = -N.axis, up to 1: then 1. The sphere seen from the light spans a half-angle
+// asin(r / distance); the smallest angle to the axis is the centre's minus that. Outside the
+// cone only by a margin (0.01 degrees) counts as outside: the shader compares cosines in float.
+double SpotFactorBound(vtkLight* light, const double positionVC[3], const double axisVC[3],
+  const double box[6], double nearest)
 {
   double center[3], toCenter[3];
   double radius = 0.0;
@@ -110,28 +110,27 @@ double SpotFactorBound(
   radius = std::sqrt(radius);
   const double distance = vtkMath::Norm(toCenter);
   const double axisLength = vtkMath::Norm(axisVC);
-  if (!(distance > radius) || !(axisLength > 0.0) ||
-    DistanceToBox(positionVC, box) <= FloatReach(positionVC, box))
+  if (!(distance > radius) || !(axisLength > 0.0) || nearest == 0.0)
   {
-    return 1.0; // the light is inside the sphere, or has no axis
+    return 1.0; // the light is inside the sphere, may be at the box, or has no axis
   }
   const double cosAngle =
     std::max(-1.0, std::min(1.0, vtkMath::Dot(toCenter, axisVC) / (distance * axisLength)));
   const double angle = vtkMath::DegreesFromRadians(std::acos(cosAngle));
   const double spread = vtkMath::DegreesFromRadians(std::asin(radius / distance));
-  const double nearest = std::max(angle - spread, 0.0);
+  const double nearestAngle = std::max(angle - spread, 0.0);
   const double cone = std::max(light->GetConeAngle(), 0.0);
-  if (nearest > cone + 0.01)
+  if (nearestAngle > cone + 0.01)
   {
     return 0.0;
   }
   const double exponent =
     std::min(LightValue(light->GetExponent()), vtkPhongProblemLog::LargestValue);
-  if (exponent == 0.0 || nearest >= 90.0)
+  if (exponent == 0.0 || nearestAngle >= 90.0)
   {
     return 1.0;
   }
-  return std::pow(std::cos(vtkMath::RadiansFromDegrees(nearest)), exponent);
+  return std::pow(std::cos(vtkMath::RadiansFromDegrees(nearestAngle)), exponent);
 }
 }
 
@@ -223,10 +222,11 @@ double vtkPhongLightCulling::ContributionBound(vtkLight* light, bool isSpot,
   {
     return 0.0;
   }
-  const double spot = isSpot ? SpotFactorBound(light, lightPositionVC, spotAxisVC, boxVC) : 1.0;
   // The nearest point's distance, less what the shader's float distance may lose.
   const double nearest =
     std::max(DistanceToBox(lightPositionVC, boxVC) - FloatReach(lightPositionVC, boxVC), 0.0);
+  const double spot =
+    isSpot ? SpotFactorBound(light, lightPositionVC, spotAxisVC, boxVC, nearest) : 1.0;
   return spot == 0.0 ? 0.0 : spot * largest * AttenuationAt(light, nearest);
 }
 
