@@ -323,8 +323,7 @@ def exact_row(rows, row):
 
 def check_budgets(rows):
     """Against the exact surface, a budget of B adds at most B to the exact mode's largest
-    error (the triangle inequality, pixel by pixel), and is never slower than the exact mode
-    by more than the noise."""
+    error (the triangle inequality, pixel by pixel). Frame times are reported, not checked."""
     failures = []
     for row in rows:
         exact = exact_row(rows, row)

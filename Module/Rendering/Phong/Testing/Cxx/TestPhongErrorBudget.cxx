@@ -12,6 +12,7 @@
 // decision thresholds (--orbit FRAMES, default 120): every frame within its budget, no
 // exception. `./vtkphong.sh budget-sweep` runs 1000 random scenes.
 #include "vtkPhongReferenceTesting.h"
+#include "vtkPhongTestTorus.h"
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -20,8 +21,6 @@
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
-#include "vtkParametricFunctionSource.h"
-#include "vtkParametricTorus.h"
 #include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongLightingSettings.h"
 #include "vtkPhongOFFReader.h"
@@ -748,18 +747,7 @@ vtkSmartPointer<vtkPolyData> MatrixMesh(int mesh, const std::string& meshDirecto
   }
   else if (mesh == 2)
   {
-    vtkNew<vtkParametricTorus> torus;
-    torus->SetRingRadius(0.7);
-    torus->SetCrossSectionRadius(0.3);
-    vtkNew<vtkParametricFunctionSource> source;
-    source->SetParametricFunction(torus);
-    source->SetUResolution(128);
-    source->SetVResolution(64);
-    vtkNew<vtkPolyDataNormals> normals;
-    normals->SetInputConnection(source->GetOutputPort());
-    normals->SplittingOff();
-    normals->Update();
-    shape = normals->GetOutput();
+    shape = vtkPhongTest::MakeTorus(0.7, 0.3, 128, 64);
   }
   else if (mesh <= 4)
   {

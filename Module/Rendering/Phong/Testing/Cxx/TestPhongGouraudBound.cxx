@@ -9,6 +9,7 @@
 // directional lights and headlights; --triangles N sets the count). Prints how tight the
 // bounds are.
 #include "vtkPhongGouraudBound.h"
+#include "vtkPhongTestTorus.h"
 #include "vtkPhongTestUtilities.h"
 
 #include "vtkBoundingBox.h"
@@ -19,13 +20,10 @@
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkOpenMeshNormals.h"
-#include "vtkParametricFunctionSource.h"
-#include "vtkParametricTorus.h"
 #include "vtkPhongOFFReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 
@@ -181,18 +179,7 @@ vtkSmartPointer<vtkPolyData> MakeMesh(int kind, std::mt19937& random)
   vtkSmartPointer<vtkPolyData> mesh;
   if (kind == 1)
   {
-    vtkNew<vtkParametricTorus> torus;
-    torus->SetRingRadius(0.6);
-    torus->SetCrossSectionRadius(0.25);
-    vtkNew<vtkParametricFunctionSource> source;
-    source->SetParametricFunction(torus);
-    source->SetUResolution(48);
-    source->SetVResolution(24);
-    vtkNew<vtkPolyDataNormals> normals;
-    normals->SetInputConnection(source->GetOutputPort());
-    normals->SplittingOff();
-    normals->Update();
-    mesh = normals->GetOutput();
+    mesh = vtkPhongTest::MakeTorus(0.6, 0.25, 48, 24);
   }
   else
   {
