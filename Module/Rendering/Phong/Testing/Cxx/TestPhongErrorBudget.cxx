@@ -856,8 +856,7 @@ bool RunMatrixScene(const MatrixScene& m, vtkPolyData* mesh, double medianArea, 
   view.Renderer->AutomaticLightCreationOff();
   view.Renderer->SetAmbient(0.15, 0.15, 0.15);
   view.Renderer->SetTwoSidedLighting(m.TwoSided != 0);
-  double bounds[6], top[3] = { 0.0, 0.0, 1.0 };
-  mesh->GetBounds(bounds);
+  double top[3] = { 0.0, 0.0, 1.0 };
   double highest = -1.0e300;
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
@@ -929,7 +928,6 @@ bool RunMatrix(const std::string& meshDirectory)
     medianAreas.push_back(MedianTriangleArea(meshes.back()));
   }
   bool ok = true;
-  int chosen[3] = { 0, 0, 0 };
   for (std::size_t i = 0; i < scenes.size(); ++i)
   {
     ok = RunMatrixScene(
