@@ -21,7 +21,6 @@ constexpr double Infinite = std::numeric_limits<double>::infinity();
 constexpr int CellsPerEdge = 8; // cube-map cells per face edge: 6 * 8 * 8 cells
 // First-order terms (the view vector's spread over a triangle) take this margin; the brute
 // force of TestPhongGouraudBound found at most 1.003 times the unmargined bound.
-constexpr double FirstOrderMargin = 1.1;
 // A lobe value small enough to bound a cell's lobe by it, without its own bound: 1e-7 of the
 // light is far below the float rounding margin (vtkPhongErrorBudget).
 constexpr double NegligibleLobe = 1.0e-7;
@@ -125,6 +124,7 @@ vtkPhongGouraudBound::Cap::Cap(double spread)
     this->HalfTangent2 = 0.5 * (s * s) / (c * c);
     this->Radial = s * (1.0 / (1.0 + c) + 2.0 * c);
     this->Kink = 0.5 * s;
+    this->Tangent = s / c;
   }
 }
 
@@ -175,21 +175,41 @@ vtkPhongGouraudBound::NearAngle::NearAngle(double angle, const Exponent& exponen
 double vtkPhongGouraudBound::LobeBound(
   const Cap& cap, const NearAngle& a, double farAngle, const Exponent& exponent)
 {
-  const double n = exponent.N;
-  if (!(cap.Spread > 0.0) || n == 0.0)
-  {
-    return 0.0; // equal normals, or a lobe that is 1 wherever it is gated on
-  }
   if (a.Value >= HalfPi)
   {
     return 0.0; // the lobe is 0 over the whole cap
   }
-  // Below n = 2 the clamp at c = 0 is no longer smooth enough for Waldron's identity: for
-  // n = 1 it is a kink, which adds at most sin(R)/2; otherwise only the largest value bounds.
-  const bool kink = n < 2.0 && farAngle >= HalfPi;
-  if (cap.Spread >= 0.25 * Pi || (kink && n != 1.0))
+  return CapBound(cap, MakeLobeTerms(a, farAngle, exponent), exponent.N);
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongGouraudBound::CapBound(const Cap& cap, const LobeTerms& lobe, double n)
+{
+  if (!(cap.Spread > 0.0) || n == 0.0)
+  {
+    return 0.0; // equal normals, or a lobe that is 1 wherever it is gated on
+  }
+  if (cap.Spread >= 0.25 * Pi)
   {
     return Infinite;
+  }
+  return cap.HalfTangent2 * (lobe.Hs + 2.0 * lobe.G1 * cap.Radial) + (lobe.Kink ? cap.Kink : 0.0);
+}
+
+//------------------------------------------------------------------------------
+// Below n = 2 the clamp at c = 0 is no longer smooth enough for Waldron's identity: for n = 1
+// it is a kink (Kink; LobeBound adds sin(R)/2), otherwise only the largest value bounds
+// (every term infinite). `a` below pi/2.
+vtkPhongGouraudBound::LobeTerms vtkPhongGouraudBound::MakeLobeTerms(
+  const NearAngle& a, double farAngle, const Exponent& exponent)
+{
+  const double n = exponent.N;
+  LobeTerms lobe;
+  lobe.Kink = n < 2.0 && farAngle >= HalfPi;
+  if (lobe.Kink && n != 1.0)
+  {
+    lobe.Hs = lobe.G1 = lobe.Hx = Infinite;
+    return lobe;
   }
   // sup over alpha in [a, b] of cos^p sin^q, p = n - q, q in {1, 2}: unimodal on [0, pi/2],
   // its peak where tan^2 = q / p (increasing when p <= 0, the peak then pi/2): at a past the
@@ -215,14 +235,29 @@ double vtkPhongGouraudBound::LobeBound(
     return std::pow(std::cos(b), p) * toQ(std::sin(b));
   };
   // d2/dalpha2 cos^n = n(n-1) cos^(n-2) sin^2 - n cos^n; s'(c) c = n cos^n;
-  // s'(c) sin = n cos^(n-1) sin.
+  // s'(c) sin = n cos^(n-1) sin; s'(c) = n cos^(n-1), largest at a for n >= 1.
   const double curvature = n * std::abs(n - 1.0); // 0 for the diffuse term's n = 1
-  const double hs =
-    (curvature > 0.0 ? curvature * sup(2, exponent.CurvaturePeak, exponent.CurvaturePeakAngle)
-                     : 0.0) +
-    n * a.CosN;
-  const double g1 = n * sup(1, exponent.SlopePeak, exponent.SlopePeakAngle);
-  return cap.HalfTangent2 * (hs + 2.0 * g1 * cap.Radial) + (kink ? cap.Kink : 0.0);
+  const double bend =
+    curvature > 0.0 ? curvature * sup(2, exponent.CurvaturePeak, exponent.CurvaturePeakAngle) : 0.0;
+  lobe.Hs = bend + n * a.CosN;
+  lobe.G1 = n * sup(1, exponent.SlopePeak, exponent.SlopePeakAngle);
+  double slope = Infinite; // sup s'(c), for 0 < n < 1 at the far angle
+  if (n >= 1.0)
+  {
+    slope = n * (a.Cos > 1.0e-100 ? a.CosN / a.Cos : std::pow(a.Cos, n - 1.0));
+  }
+  else if (b < HalfPi)
+  {
+    slope = n * std::pow(std::cos(b), n - 1.0);
+  }
+  lobe.Hx = bend + std::max(n * a.CosN, slope);
+  if (lobe.Kink)
+  {
+    // n = 1: the unclamped cosine, whose interpolation the kink's bound adds to, curves by
+    // |cos| up to the far angle, past pi/2 too.
+    lobe.Hs = std::max(lobe.Hs, -std::cos(std::min(farAngle, Pi)));
+  }
+  return lobe;
 }
 
 //------------------------------------------------------------------------------
@@ -276,6 +311,7 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
     }
     cell.Reach = 0.5 * Norm(diagonal);
     cell.Normals = Cap(cell.Spread);
+    cell.Reflections = Cap(2.0 * cell.Spread);
     cell.ReflectionSkew = ReflectionSkew(cell.Spread);
     cell.CosWidth = std::cos(cell.Cone + cell.Spread);
     cell.SinWidth = std::sin(cell.Cone + cell.Spread);
@@ -543,6 +579,7 @@ vtkPhongGouraudBound::LocalView vtkPhongGouraudBound::MakeLocalView(
     return local;
   }
   local.Spread = std::asin(sine);
+  local.Directions = Cap(local.Spread);
   // The angle's sine y is below 1 here (sine < 0.5); tan(asin y) = y / sqrt(1 - y^2) bounds the
   // angle without a second arcsine per cell.
   const double skewSine = 4.0 * sine * sine;
@@ -609,7 +646,7 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
 {
   // The lobe's axis against the cell's normals: Blinn's H against N, or Phong's reflected
   // vector (which turns twice as far as N) against V.
-  double centre, width, spread, scale = 1.0;
+  double centre, width;
   // The lobe's axis, and the direction its angle is measured from.
   Vector axis = halfway.Direction, from = d;
   if (scene.Blinn)
@@ -619,7 +656,6 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
       return halfway.LobeZero ? 0.0 : Infinite;
     }
     width = cell.Cone + cell.Spread + view.Spread / halfway.Least;
-    spread = cell.Spread + localView.Spread / halfway.Least;
   }
   else
   {
@@ -628,7 +664,6 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
       2.0 * c * d[2] - toLight[2] } };
     axis = view.Centre;
     width = 2.0 * (cell.Cone + cell.Spread) + view.Spread;
-    spread = 2.0 * cell.Spread + localView.Spread;
   }
   // Most cells lie beyond the lobe: told by a cosine, before any angle is taken. With
   // Cut <= pi/2, cos(Cut + width) >= cos(Cut) (1 - width^2 / 2) - sin(Cut) width, which needs
@@ -639,10 +674,6 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
     return NegligibleLobe;
   }
   centre = Angle(from, axis);
-  if (!scene.Parallel)
-  {
-    scale = FirstOrderMargin;
-  }
   const double nearLobe = std::max(centre - width, 0.0);
   // Where the lobe is below 1e-7 of the light over the whole cell (most cells, for all but the
   // widest lobes), that bounds it: no power and no lobe bound.
@@ -664,5 +695,53 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   const double turn =
     scene.Blinn ? localView.Skew / halfway.Least : localView.Skew + cell.ReflectionSkew;
   const double skew = turn > 0.0 ? turn * SlopeBeyond(a, exponent) : 0.0;
-  return std::min(largest, scale * LobeBound(Cap(spread), a, centre + width, exponent) + skew);
+  // The lobe's axis fixed (the cap of the normals, or of Phong's reflected vectors), then the
+  // view vector's spread over the triangle.
+  const Cap& lobeCap = scene.Blinn ? cell.Normals : cell.Reflections;
+  const LobeTerms lobe = MakeLobeTerms(a, centre + width, exponent);
+  const double viewSpread = localView.Spread > 0.0 && exponent.N != 0.0
+    ? ViewSpreadBound(lobe, lobeCap, localView, scene.Blinn, halfway.Least)
+    : 0.0;
+  return std::min(largest, CapBound(lobeCap, lobe, exponent.N) + viewSpread + skew);
+}
+
+//------------------------------------------------------------------------------
+// What the view vector's spread over a triangle adds to LobeBound, in perspective. Waldron's
+// identity, applied to the normal and the view vector interpolated together (the points
+// X_i = (n_i, v_i) of R^6, v_i the vertices' unit view vectors in a cap of radius rho, and
+// phi(m, v) = s(c), c the cosine between the lobe's axis and the vector it is measured from),
+// gives G - F = 1/2 sum b_i Q_i, Q_i the Hessian of phi at points between X(b) and X_i applied
+// to d_i = (a_i, e_i) = X_i - X(b), where sum b_i |a_i|^2 <= sin^2 R and sum b_i |e_i|^2 <=
+// sin^2 rho. Its part in a_i alone is LobeBound's. Of the rest (docs/lighting-model.md):
+// - the mixed part: with dN and dH the turns the two vectors take, s''(dN.H)(N.dH) + s' dN.dH
+//   is at most Hx |dN| |dH|; |dN| <= |a| / cos R, |dH| <= k |e| / cos rho (Blinn: k = 1 / |L + V|
+//   at its least; Phong, where V is the lobe's axis: k = 1), so it adds Hx tan R tan rho k;
+// - the part in e_i alone: Phong's is LobeBound's for the view vectors' cap; Blinn's H moves
+//   by dH and bends by at most (k^2 + 1.1548 k) |e|^2 / cos^2 rho across H (the second
+//   derivatives of two normalizations), so it adds tan^2 rho / 2 (Hs k^2 + G1 (k^2 + 1.1548 k)).
+// The kink of an n = 1 lobe grows from sin(R) / 2 to sin(R + k rho) / 2.
+double vtkPhongGouraudBound::ViewSpreadBound(const LobeTerms& lobe, const Cap& normals,
+  const LocalView& localView, bool blinn, double halfwayLeast)
+{
+  const Cap& views = localView.Directions;
+  if (!(views.Spread > 0.0))
+  {
+    return 0.0;
+  }
+  if (views.Spread >= 0.25 * Pi || !(halfwayLeast > 0.0 || !blinn))
+  {
+    return Infinite;
+  }
+  const double k = blinn ? 1.0 / halfwayLeast : 1.0;
+  const double mixed = lobe.Hx * normals.Tangent * views.Tangent * k;
+  const double alone = blinn
+    ? views.HalfTangent2 * (lobe.Hs * k * k + lobe.G1 * (k * k + 1.1548 * k))
+    : views.HalfTangent2 * (lobe.Hs + 2.0 * lobe.G1 * views.Radial);
+  double kink = 0.0;
+  if (lobe.Kink)
+  {
+    const double widest = std::min(normals.Spread + k * views.Spread, HalfPi);
+    kink = 0.5 * (std::sin(widest) - std::sin(normals.Spread));
+  }
+  return mixed + alone + kink;
 }

@@ -30,10 +30,11 @@
  * largest triangle radius and the ball around its points; Bound() then costs cells x lights
  * per frame and bounds every triangle of a cell at once (the cell's angles widen by its cone,
  * and in perspective by the view vector's cone over the cell's ball). Only directional lights
- * are bounded; a perspective view adds the view vector's spread over a triangle (first
- * order, with a margin of 1.1 checked by brute force in TestPhongGouraudBound), and, proven,
- * the turn of the lobe's axis by the skew of the interpolated view vector (MakeLocalView)
- * and, for Phong, of the reflected interpolated normal (ReflectionSkew).
+ * are bounded. A perspective view adds the view vector's spread over a triangle, from
+ * Waldron's identity for the normal and the view vector interpolated together
+ * (ViewSpreadBound), and the turn of the lobe's axis by the skew of the interpolated view
+ * vector (MakeLocalView); Phong adds that of the reflected interpolated normal
+ * (ReflectionSkew).
  */
 
 #ifndef vtkPhongGouraudBound_h
@@ -131,6 +132,7 @@ private:
   {
     explicit Cap(double spread = 0.0);
     double Spread, HalfTangent2 = 0.0, Radial = 0.0, Kink = 0.0;
+    double Tangent = 0.0; ///< tan(R): the cap's sum of b_i |n_i - m|^2 over |m|, rooted
   };
   struct Cell
   {
@@ -146,6 +148,7 @@ private:
     double Reach = 0.0;                    ///< that ball's radius
     // Made once binning ends, since the bound needs them every frame:
     Cap Normals;                           ///< the cap of the largest radius, Spread
+    Cap Reflections;                       ///< Phong's reflected vectors' cap, 2 Spread
     double CosWidth = 1.0, SinWidth = 0.0; ///< of Cone + Spread, the normals' angles around Axis
     double ReflectionSkew = 0.0;           ///< ReflectionSkew(Spread), Phong's reflected vector
   };
@@ -173,6 +176,7 @@ private:
   {
     double Spread = 0.0;
     double Skew = 0.0;
+    Cap Directions; ///< the cap of the vertices' unit view vectors (radius Spread)
   };
   static LocalView MakeLocalView(const Scene& scene, const Cell& cell, const View& view);
   static Halfway MakeHalfway(const Scene& scene, const View& view, const Vector& toLight);
@@ -198,6 +202,18 @@ private:
     NearAngle(double angle, const Exponent& exponent);
     double Value, Cos, Sin, CosN;
   };
+  /// The suprema of a lobe's derivatives over a range of angles that Waldron's identity
+  /// takes (LobeBound): Hs and G1 above, and Hx = sup max(|d2 s/d alpha2|, s'(c)), which
+  /// bounds the mixed derivative when both the normal and the lobe's axis move.
+  struct LobeTerms
+  {
+    double Hs = 0.0, G1 = 0.0, Hx = 0.0;
+    bool Kink = false; ///< n = 1 and the clamp at c = 0 within the range
+  };
+  static LobeTerms MakeLobeTerms(const NearAngle& nearAngle, double farAngle, const Exponent& exponent);
+  static double CapBound(const Cap& cap, const LobeTerms& lobe, double n);
+  static double ViewSpreadBound(const LobeTerms& lobe, const Cap& normals,
+    const LocalView& localView, bool blinn, double halfwayLeast);
   static Bounds CellBound(const Cell& cell, const Scene& scene, const Exponent& exponent,
     const View& view, const std::vector<Halfway>& halfways);
   static double LobeBound(

@@ -397,7 +397,8 @@ Vector Turned(const Vector& axis, double turn, double around)
 // One random triangle, its shape by `kind`: 0-3 any, 4 its points on a line (no area), 5 two
 // points at one place, 6 a sliver (one side 1e-4 of the others), 7 at most 1e-3 across. Its
 // normals lie in a cap of random radius (from 1e-4 to 1.2 rad, 0 in one case of eight: all
-// three alike) around a random axis, one of them sometimes at the cap's very edge.
+// three alike) around a random axis, one of them sometimes at the cap's very edge, or in one
+// case of four turn with the points.
 void RandomTriangle(std::mt19937& random, int kind, vtkPoints* points, vtkDataArray* normals)
 {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -424,10 +425,19 @@ void RandomTriangle(std::mt19937& random, int kind, vtkPoints* points, vtkDataAr
   const Vector axis = RandomDirection(random);
   const double radius =
     random() % 8 == 0 ? 0.0 : std::pow(10.0, -4.0 + 4.08 * unit(random)); // up to 1.2 rad
+  // In one case of four the normals turn with the points, as on a curved surface (convex or
+  // concave): then, in perspective, the normal and the view vector turn together.
+  const bool curved = random() % 4 == 0;
+  const double curvature = (random() % 2 ? 1.0 : -1.0) * radius / size;
   for (int i = 0; i < 3; ++i)
   {
     const double turn = i == 0 && random() % 4 == 0 ? radius : radius * std::sqrt(unit(random));
-    const Vector n = Turned(axis, turn, 6.283185307179586 * unit(random));
+    Vector n = Turned(axis, turn, 6.283185307179586 * unit(random));
+    if (curved)
+    {
+      n = Unit({ { axis[0] + curvature * p[i][0], axis[1] + curvature * p[i][1],
+        axis[2] + curvature * p[i][2] } });
+    }
     points->SetPoint(i, p[i].data());
     normals->SetTuple(i, n.data());
   }
