@@ -19,7 +19,8 @@
 //    The same shells as blocks of a multiblock through the composite mappers (ParaView's Phong
 //    Surface and Surface).
 // 4. --only kinds: every light kind at 1, 8 and 32 lights on the sphere and the meshes given.
-// 5. Frame time against the error budget: stock, exact, budgets 0.5, 1 and 3 levels.
+// 5. Frame time against the error budget: stock, exact, budgets 0.5, 1 and 3 levels; then
+//    the budget's planner (--only planner runs that table alone).
 // 6. --only aa: specular anti-aliasing's cost, off against on (n = 1e3, 1 and 8 lights).
 //
 // On llvmpipe fragment work runs on the CPU, so shader cost shows in these
@@ -1035,8 +1036,8 @@ void PlannerCost(
   const std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>>& meshes, bool quick)
 {
   std::printf("\n== The error budget's planner (ms) ==\n");
-  std::printf("%-22s %10s %12s %12s %12s %12s\n", "mesh", "binning", "1 light", "8 lights",
-    "8, whole", "8, still");
+  std::printf("%-22s %10s %12s %12s %12s %12s %12s\n", "mesh", "binning", "1 light", "8 lights",
+    "8, whole", "8, still", "8 point, wh.");
   const int batches = quick ? 1 : 11, calls = quick ? 5 : 20;
   for (const auto& mesh : meshes)
   {
@@ -1045,7 +1046,11 @@ void PlannerCost(
     bound.Update({ mesh.second.GetPointer() }, 1);
     const double binning = Seconds(start);
     std::vector<double> perCall;
-    for (int which = 0; which < 4; ++which)
+    double bounds[6];
+    mesh.second->GetBounds(bounds);
+    const double size =
+      std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0e-12 });
+    for (int which = 0; which < 5; ++which)
     {
       vtkPhongGouraudBound::Scene scene;
       scene.Parallel = false;
@@ -1059,9 +1064,15 @@ void PlannerCost(
           1.0 / std::sqrt(2.0) } };
         light.Diffuse = 0.24;
         light.Specular = 0.15;
+        light.Positional = which == 4; // at twice the mesh's size, in the same directions
+        for (int k = 0; k < 3; ++k)
+        {
+          light.PositionMC[k] =
+            0.5 * (bounds[2 * k] + bounds[2 * k + 1]) + 2.0 * size * light.ToLightMC[k];
+        }
         scene.Lights.push_back(light);
       }
-      const double limit = which == 2 ? HUGE_VAL : 1.0 / 255.0;
+      const double limit = which == 2 || which == 4 ? HUGE_VAL : 1.0 / 255.0;
       std::vector<double> series;
       for (int batch = 0, call = 0; batch < batches; ++batch)
       {
@@ -1076,11 +1087,12 @@ void PlannerCost(
       }
       perCall.push_back(Median(series));
     }
-    std::printf("%-22s %10.1f %12.3f %12.3f %12.3f %12.4f\n", mesh.first.c_str(), 1e3 * binning,
-      1e3 * perCall[0], 1e3 * perCall[1], 1e3 * perCall[2], 1e3 * perCall[3]);
+    std::printf("%-22s %10.1f %12.3f %12.3f %12.3f %12.4f %12.3f\n", mesh.first.c_str(),
+      1e3 * binning, 1e3 * perCall[0], 1e3 * perCall[1], 1e3 * perCall[2], 1e3 * perCall[3],
+      1e3 * perCall[4]);
   }
   std::printf("(binning: once per upload; the others per frame and actor, the eye turning or "
-              "still; limited at 1 level but \"whole\")\n");
+              "still; limited at 1 level but \"whole\"; point lights at twice the mesh's size)\n");
 }
 
 // The mode a vtkPhong mapper's last plan chose under its error budget, in a word.
@@ -1234,7 +1246,7 @@ int main(int argc, char* argv[])
     else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
     {
       std::printf("usage: %s [MESH.off ...] [--quick] [--only shaders|lights|interpolation|"
-                  "meshes|culling|shells|kinds|budget|aa]\n",
+                  "meshes|culling|shells|kinds|budget|planner|aa]\n",
         argv[0]);
       return 0;
     }
@@ -1276,6 +1288,10 @@ int main(int argc, char* argv[])
   if (wanted("budget"))
   {
     BudgetSection(meshFiles, quick);
+  }
+  if (only == "planner")
+  {
+    PlannerCost(SphereAndMeshes(meshFiles, quick), quick);
   }
   if (wanted("aa"))
   {

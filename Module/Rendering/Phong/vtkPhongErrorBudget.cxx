@@ -104,8 +104,7 @@ vtkPhongErrorBudget::Mode vtkPhongErrorBudget::ChooseMode(vtkRenderer* ren, vtkA
 {
   bound = 0.0;
   vtkPhongGouraudBound::Scene scene;
-  if (!plan.PointLights.empty() || !plan.SpotLights.empty() ||
-    !MakeScene(ren, actor, plan, scene) ||
+  if (!plan.SpotLights.empty() || !MakeScene(ren, actor, plan, scene) ||
     !PerVertexIsCheaper(ren, actor, triangles, scene.TwoSided))
   {
     return Mode::PerFragment;
@@ -201,6 +200,38 @@ bool vtkPhongErrorBudget::MakeScene(vtkRenderer* ren, vtkActor* actor,
       -geometry.DirectionVC[2] };
     vtkPhongGouraudBound::Scene::Light bounded;
     bounded.ToLightMC = ToModel(viewToModel, toLightVC);
+    bounded.Diffuse = Strength(weights[1], light->GetDiffuseColor(), light->GetIntensity());
+    bounded.Specular = Strength(weights[2], light->GetSpecularColor(), light->GetIntensity());
+    scene.Lights.push_back(bounded);
+  }
+  return AddPointLights(ren, plan, viewToModel, weights, scene);
+}
+
+//------------------------------------------------------------------------------
+// Point lights without attenuation (VTK's default (1, 0, 0)): the bound takes no attenuation's
+// curvature, so an attenuated one leaves the scene unbounded (false).
+bool vtkPhongErrorBudget::AddPointLights(vtkRenderer* ren, const vtkPhongShaderPlan& plan,
+  vtkMatrix4x4* viewToModel, const double weights[3][3], vtkPhongGouraudBound::Scene& scene)
+{
+  for (vtkLight* light : plan.PointLights)
+  {
+    const double* attenuation = light->GetAttenuationValues();
+    if (!(attenuation[0] == 1.0 && attenuation[1] == 0.0 && attenuation[2] == 0.0))
+    {
+      return false;
+    }
+    const vtkPhongLightGeometry geometry = vtkPhongLightGeometry::InView(light, ren);
+    const double positionVC[4] = { geometry.PositionVC[0], geometry.PositionVC[1],
+      geometry.PositionVC[2], 1.0 };
+    double positionMC[4];
+    viewToModel->MultiplyPoint(positionVC, positionMC);
+    vtkPhongGouraudBound::Scene::Light bounded;
+    bounded.Positional = true;
+    bounded.ToLightMC = { { 0.0, 0.0, 1.0 } };
+    for (int i = 0; i < 3; ++i)
+    {
+      bounded.PositionMC[i] = positionMC[i] / positionMC[3];
+    }
     bounded.Diffuse = Strength(weights[1], light->GetDiffuseColor(), light->GetIntensity());
     bounded.Specular = Strength(weights[2], light->GetSpecularColor(), light->GetIntensity());
     scene.Lights.push_back(bounded);

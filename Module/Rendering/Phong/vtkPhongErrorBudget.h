@@ -27,6 +27,7 @@
 #include "vtkPhongShaderPlan.h"   // for vtkPhongShaderPlan
 
 class vtkActor;
+class vtkMatrix4x4;
 class vtkRenderer;
 
 class vtkPhongErrorBudget
@@ -62,10 +63,16 @@ private:
   // The rounding of float lighting against the double model, taken off what per-vertex
   // lighting may spend: 0.01 level plus 2e-5 of the lights' largest contributions.
   static double FloatMargin(const vtkPhongGouraudBound::Scene& scene);
-  // The directional lights, the view and the material in the model coordinates of the
-  // normals; false when the actor's matrix is not a similarity (angles would not hold).
+  // The lights, the view and the material in the model coordinates of the normals; false
+  // when the actor's matrix is not a similarity (angles would not hold) or a light is not
+  // bounded (AddPointLights).
   static bool MakeScene(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
     vtkPhongGouraudBound::Scene& scene);
+  // The plan's point lights into `scene` (their positions in model coordinates, by
+  // `viewToModel`; `weights` the materials' of vtkPhongLightCulling::MaterialWeights); false
+  // for an attenuated one.
+  static bool AddPointLights(vtkRenderer* ren, const vtkPhongShaderPlan& plan,
+    vtkMatrix4x4* viewToModel, const double weights[3][3], vtkPhongGouraudBound::Scene& scene);
   // Whether the specular sums alone per vertex save more than they cost: two lobes or more,
   // 20 or more where per fragment the lobes would be squared.
   static bool SpecularPerVertexPays(const vtkPhongGouraudBound::Scene& scene, bool squared);

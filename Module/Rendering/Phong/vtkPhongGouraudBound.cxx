@@ -118,14 +118,29 @@ double vtkPhongGouraudBound::LobeBound(double spread, double nearAngle, double f
 vtkPhongGouraudBound::Cap::Cap(double spread)
   : Spread(spread)
 {
+  if (spread > 0.0 && spread < 0.25 * Pi) // no sine and cosine for an empty cap
+  {
+    this->SetTerms(std::sin(spread), std::cos(spread));
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkPhongGouraudBound::Cap::Cap(double spread, double s, double c)
+  : Spread(spread)
+{
   if (spread > 0.0 && spread < 0.25 * Pi)
   {
-    const double c = std::cos(spread), s = std::sin(spread);
-    this->HalfTangent2 = 0.5 * (s * s) / (c * c);
-    this->Radial = s * (1.0 / (1.0 + c) + 2.0 * c);
-    this->Kink = 0.5 * s;
-    this->Tangent = s / c;
+    this->SetTerms(s, c);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongGouraudBound::Cap::SetTerms(double s, double c)
+{
+  this->HalfTangent2 = 0.5 * (s * s) / (c * c);
+  this->Radial = s * (1.0 / (1.0 + c) + 2.0 * c);
+  this->Kink = 0.5 * s;
+  this->Tangent = s / c;
 }
 
 //------------------------------------------------------------------------------
@@ -379,7 +394,8 @@ void vtkPhongGouraudBound::AddPolygon(
 bool vtkPhongGouraudBound::Scene::Light::operator==(const Light& other) const
 {
   return this->ToLightMC == other.ToLightMC && this->Diffuse == other.Diffuse &&
-    this->Specular == other.Specular;
+    this->Specular == other.Specular && this->Positional == other.Positional &&
+    this->PositionMC == other.PositionMC;
 }
 
 //------------------------------------------------------------------------------
@@ -414,6 +430,7 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene, d
   largest = { 0.0, 0.0 };
   const Exponent exponent(scene.Shininess);
   std::vector<Halfway> halfways(scene.Lights.size());
+  CellScratch scratch; // CellBound's, reused from cell to cell
   bool halfwaysMade = false;
   for (const Cell& cell : this->Cells)
   {
@@ -432,13 +449,20 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene, d
       halfwaysMade = true;
       for (std::size_t i = 0; i < scene.Lights.size(); ++i)
       {
-        halfways[i] = MakeHalfway(scene, view, scene.Lights[i].ToLightMC);
+        if (!scene.Lights[i].Positional) // a point light's, per cell (CellBound)
+        {
+          LightView directional;
+          directional.ToLight = scene.Lights[i].ToLightMC;
+          halfways[i] = MakeHalfway(scene, view, directional);
+        }
       }
     }
-    const Bounds bounds = CellBound(cell, scene, exponent, view, halfways);
+    const Bounds bounds = CellBound(cell, scene, exponent, view, halfways, scratch);
     largest.PerVertex = std::max(largest.PerVertex, bounds.PerVertex);
     largest.SpecularPerVertex = std::max(largest.SpecularPerVertex, bounds.SpecularPerVertex);
-    if (largest.SpecularPerVertex > limit) // and so PerVertex, which adds the diffuse terms
+    // Both past the limit (PerVertex adds the diffuse terms, but under a point light
+    // SpecularPerVertex is infinite from the first cell on).
+    if (std::min(largest.PerVertex, largest.SpecularPerVertex) > limit)
     {
       break;
     }
@@ -448,28 +472,40 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::Compute(const Scene& scene, d
 
 //------------------------------------------------------------------------------
 // Blinn's halfway vector between a light and the view cone's centre, and |L + V| at its least
-// over the cone: the same for every cell, so made once per light.
+// over the cone and the light's (`lightSpread`, its half-angle; 0 for a directional light,
+// whose halfway vector in parallel projection is the same for every cell, so made once).
 vtkPhongGouraudBound::Halfway vtkPhongGouraudBound::MakeHalfway(
-  const Scene& scene, const View& view, const Vector& toLight)
+  const Scene& scene, const View& view, const LightView& light)
 {
+  const Vector& toLight = light.ToLight;
+  const double lightSpread = light.Spread;
   Halfway halfway;
   if (!scene.Blinn)
   {
     return halfway;
   }
   // |L + V| = 2 cos(g/2) and |L - V| = 2 sin(g/2) for the angle g between them; at its least
-  // over the view cone |L + V| = 2 cos((g + spread)/2), 0 once that passes pi.
+  // over the cones |L + V| = 2 cos((g + spread)/2), 0 once that passes pi.
+  double cosHalf = view.CosHalfSpread, sinHalf = view.SinHalfSpread;
+  if (lightSpread > 0.0)
+  {
+    // Half the sum of the two cones' angles, by the half-angle and addition formulas (past
+    // pi the least |L + V| below comes out negative, so 0: unbounded).
+    const double cosLight = std::sqrt(0.5 * (1.0 + light.CosSpread));
+    const double sinLight = light.SinSpread / (2.0 * cosLight);
+    cosHalf = view.CosHalfSpread * cosLight - view.SinHalfSpread * sinLight;
+    sinHalf = view.SinHalfSpread * cosLight + view.CosHalfSpread * sinLight;
+  }
   halfway.Direction = { { toLight[0] + view.Centre[0], toLight[1] + view.Centre[1],
     toLight[2] + view.Centre[2] } };
   const Vector difference = { { toLight[0] - view.Centre[0], toLight[1] - view.Centre[1],
     toLight[2] - view.Centre[2] } };
-  halfway.Least = std::max(
-    Norm(halfway.Direction) * view.CosHalfSpread - Norm(difference) * view.SinHalfSpread, 0.0);
+  halfway.Least = std::max(Norm(halfway.Direction) * cosHalf - Norm(difference) * sinHalf, 0.0);
   const bool opposite = !Normalize(halfway.Direction);
-  halfway.LobeZero = scene.Parallel && opposite; // L = -V everywhere: the lobe is 0
-  // H turns without bound as V does.
-  halfway.Unbounded =
-    !halfway.LobeZero && (opposite || (!scene.Parallel && !(halfway.Least > 1.0e-3)));
+  const bool fixed = scene.Parallel && lightSpread == 0.0; // L and V the same everywhere
+  halfway.LobeZero = fixed && opposite;                    // L = -V everywhere: the lobe is 0
+  // H turns without bound as V or L does.
+  halfway.Unbounded = !halfway.LobeZero && (opposite || (!fixed && !(halfway.Least > 1.0e-3)));
   return halfway;
 }
 
@@ -508,14 +544,18 @@ bool vtkPhongGouraudBound::MakeView(const Scene& scene, const Cell& cell, View& 
 // angles between the light and the cell's normals, [toLight - width, toLight + width], go by
 // their cosines and sines (no arctangent per light and cell: this runs per frame).
 vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, const Scene& scene,
-  const Exponent& exponent, const View& view, const std::vector<Halfway>& halfways)
+  const Exponent& exponent, const View& view, const std::vector<Halfway>& halfways,
+  CellScratch& scratch)
 {
-  // The normals' angles around d: within Cone + Spread.
-  const double cosWidth = cell.CosWidth, sinWidth = cell.SinWidth;
-  const bool wide = cell.Cone + cell.Spread >= HalfPi;
   const LocalView localView = MakeLocalView(scene, cell, view);
-  const Cap& normals = cell.Normals;
   const double cosGateOpen = std::sin(1.0e-3); // cos(pi/2 - 1e-3)
+  bool positional = false;
+  if (!MakeLightViews(cell, scene, view, scratch, positional))
+  {
+    return { Infinite, Infinite };
+  }
+  const std::vector<LightView>& lights = scratch.Lights;
+  const std::vector<Halfway>& pointHalfways = scratch.Halfways;
   Bounds largest = { 0.0, 0.0 };
   for (double side : { 1.0, -1.0 })
   {
@@ -528,7 +568,15 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, c
     for (std::size_t i = 0; i < scene.Lights.size(); ++i)
     {
       const Scene::Light& light = scene.Lights[i];
-      const double c = std::min(std::max(Dot(d, light.ToLightMC), -1.0), 1.0); // cos(toLight)
+      const LightView& toLight = lights[i];
+      // The angles between the light and the cell's normals: within Cone + Spread (and the
+      // light's cone over the cell) around d.
+      const double width = cell.Cone + cell.Spread + toLight.Spread;
+      const bool wide = width >= HalfPi;
+      // cos and sin of the sum, from the cell's and the light's own (no cosine per light).
+      const double cosWidth = cell.CosWidth * toLight.CosSpread - cell.SinWidth * toLight.SinSpread;
+      const double sinWidth = cell.SinWidth * toLight.CosSpread + cell.CosWidth * toLight.SinSpread;
+      const double c = std::min(std::max(Dot(d, toLight.ToLight), -1.0), 1.0); // cos(toLight)
       const double s = std::sqrt(1.0 - c * c);
       if (!wide && c <= -sinWidth)
       {
@@ -539,20 +587,52 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, c
       const double cosFar =
         wide || c * sinWidth + s * cosWidth < 0.0 ? -1.0 : c * cosWidth - s * sinWidth;
       const double sinFar = cosFar <= 0.0 ? 1.0 : s * cosWidth + c * sinWidth; // of min(far, pi/2)
-      diffuse += light.Diffuse * DiffuseBound(normals, cosNear, sinFar, cosFar <= 0.0);
+      double term = DiffuseBound(cell.Normals, cosNear, cosFar, sinFar);
+      if (light.Positional)
+      {
+        term = std::min(
+          term + LightSpreadBound(cell.Normals, toLight.Local, cosNear, cosFar, sinFar), cosNear);
+      }
+      diffuse += light.Diffuse * term;
       if (light.Specular > 0.0)
       {
         specular += light.Specular *
-          SpecularBound(cell, scene, exponent, view, d, light.ToLightMC, halfways[i], localView,
-            cosFar <= cosGateOpen);
+          SpecularBound(cell, scene, exponent, view, d, toLight,
+            light.Positional ? pointHalfways[i] : halfways[i], localView, cosFar <= cosGateOpen);
       }
     }
     // NaN, from a degenerate input, bounds nothing.
     const auto bounded = [](double value) { return value >= 0.0 ? value : Infinite; };
     largest.PerVertex = std::max(largest.PerVertex, bounded(diffuse + specular));
-    largest.SpecularPerVertex = std::max(largest.SpecularPerVertex, bounded(specular));
+    // That mode lights only the directional lights' diffuse term per fragment.
+    largest.SpecularPerVertex =
+      std::max(largest.SpecularPerVertex, positional ? Infinite : bounded(specular));
   }
   return largest;
+}
+
+//------------------------------------------------------------------------------
+// Each light over the cell (into `scratch`); a point light's cone and halfway vector are the
+// cell's own. False where a point light is too close to the cell to bound it.
+bool vtkPhongGouraudBound::MakeLightViews(
+  const Cell& cell, const Scene& scene, const View& view, CellScratch& scratch, bool& positional)
+{
+  scratch.Lights.resize(scene.Lights.size());
+  scratch.Halfways.resize(scene.Lights.size());
+  positional = false;
+  for (std::size_t i = 0; i < scene.Lights.size(); ++i)
+  {
+    if (!MakeLightView(scene.Lights[i], cell, scratch.Lights[i]))
+    {
+      return false;
+    }
+    if (scene.Lights[i].Positional)
+    {
+      positional = true;
+      scratch.Halfways[i] = MakeHalfway(scene, view, scratch.Lights[i]);
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -567,24 +647,62 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, c
 vtkPhongGouraudBound::LocalView vtkPhongGouraudBound::MakeLocalView(
   const Scene& scene, const Cell& cell, const View& view)
 {
+  return scene.Parallel ? LocalView() : MakeLocalSpread(cell.Radius, view.Nearest);
+}
+
+//------------------------------------------------------------------------------
+// The same for a point at least `nearest` from a triangle of radius `radius` (a point light).
+vtkPhongGouraudBound::LocalView vtkPhongGouraudBound::MakeLocalSpread(double radius, double nearest)
+{
   LocalView local;
-  if (scene.Parallel)
-  {
-    return local;
-  }
-  const double sine = cell.Radius / view.Nearest;
+  const double sine = radius / nearest;
   if (!(sine < 0.5))
   {
     local.Spread = local.Skew = Infinite;
     return local;
   }
   local.Spread = std::asin(sine);
-  local.Directions = Cap(local.Spread);
+  local.Directions = Cap(local.Spread, sine, std::sqrt(1.0 - sine * sine));
   // The angle's sine y is below 1 here (sine < 0.5); tan(asin y) = y / sqrt(1 - y^2) bounds the
   // angle without a second arcsine per cell.
   const double skewSine = 4.0 * sine * sine;
   local.Skew = skewSine / std::sqrt(1.0 - skewSine * skewSine);
   return local;
+}
+
+//------------------------------------------------------------------------------
+// A point light over a cell: the direction from the cell's centre towards it, the cone that
+// holds that direction over the cell's ball, and its spread and skew over one triangle
+// (MakeLocalSpread). False where the light is in or at the ball: L then takes every direction.
+bool vtkPhongGouraudBound::MakeLightView(
+  const Scene::Light& light, const Cell& cell, LightView& lightView)
+{
+  lightView = LightView();
+  if (!light.Positional)
+  {
+    lightView.ToLight = light.ToLightMC;
+    return true;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    lightView.ToLight[k] = light.PositionMC[k] - cell.Centre[k];
+  }
+  const double distance = Norm(lightView.ToLight);
+  if (!(distance > 1.01 * cell.Reach) || !std::isfinite(distance))
+  {
+    return false;
+  }
+  for (double& component : lightView.ToLight)
+  {
+    component /= distance;
+  }
+  lightView.SinSpread = cell.Reach / distance;
+  lightView.CosSpread = std::sqrt(1.0 - lightView.SinSpread * lightView.SinSpread);
+  // The angle only widens angles it is added to: its tangent, at least the angle, spares an
+  // arcsine per light and cell (the cosine and sine are the angle's own).
+  lightView.Spread = lightView.SinSpread / lightView.CosSpread;
+  lightView.Local = MakeLocalSpread(cell.Radius, distance - cell.Reach);
+  return std::isfinite(lightView.Local.Spread);
 }
 
 //------------------------------------------------------------------------------
@@ -624,7 +742,7 @@ double vtkPhongGouraudBound::SlopeBeyond(const NearAngle& a, const Exponent& exp
 // max(N.L, 0): the lobe bound with n = 1 (the terminator a kink), never more than the
 // term's largest value: for n = 1, Hs = cos(near), G1 = sin(min(far, pi/2)).
 double vtkPhongGouraudBound::DiffuseBound(
-  const Cap& normals, double cosNear, double sinFar, bool terminator)
+  const Cap& normals, double cosNear, double cosFar, double sinFar)
 {
   if (!(normals.Spread > 0.0))
   {
@@ -634,16 +752,57 @@ double vtkPhongGouraudBound::DiffuseBound(
   {
     return cosNear;
   }
-  const double bound = normals.HalfTangent2 * (cosNear + 2.0 * sinFar * normals.Radial) +
+  const bool terminator = cosFar <= 0.0;
+  const double bound =
+    normals.HalfTangent2 * (DiffuseCurvature(cosNear, cosFar) + 2.0 * sinFar * normals.Radial) +
     (terminator ? normals.Kink : 0.0);
   return std::min(bound, cosNear);
 }
 
 //------------------------------------------------------------------------------
+// Hs of the diffuse term: the cosine's curvature |cos|, unclamped where the kink's bound takes
+// the clamp, so up to the far angle past pi/2 too (cosFar: of min(far, pi), -1 beyond).
+double vtkPhongGouraudBound::DiffuseCurvature(double cosNear, double cosFar)
+{
+  return std::max(cosNear, -cosFar);
+}
+
+//------------------------------------------------------------------------------
+// What a point light's spread over a triangle adds to the diffuse term's bound: Waldron's
+// identity for the normal and the light's direction l interpolated together, as for Phong's
+// reflected vector and the view vector (ViewSpreadBound), with n = 1 (Hx = 1): the mixed part
+// tan R tan sigma, the light's cap alone E(sigma), the kink widened to sin(R + sigma) / 2,
+// and the skew of the interpolated light vector at the cosine's slope sin.
+double vtkPhongGouraudBound::LightSpreadBound(
+  const Cap& normals, const LocalView& localLight, double cosNear, double cosFar, double sinFar)
+{
+  const Cap& lights = localLight.Directions;
+  if (!(lights.Spread > 0.0))
+  {
+    return 0.0;
+  }
+  if (lights.Spread >= 0.25 * Pi || normals.Spread >= 0.25 * Pi)
+  {
+    return Infinite;
+  }
+  const double mixed = normals.Tangent * lights.Tangent;
+  const double alone =
+    lights.HalfTangent2 * (DiffuseCurvature(cosNear, cosFar) + 2.0 * sinFar * lights.Radial);
+  double kink = 0.0;
+  if (cosFar <= 0.0)
+  {
+    const double widest = std::min(normals.Spread + lights.Spread, HalfPi);
+    kink = 0.5 * (std::sin(widest) - std::sin(normals.Spread));
+  }
+  return mixed + alone + kink + localLight.Skew * sinFar;
+}
+
+//------------------------------------------------------------------------------
 double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
-  const Exponent& exponent, const View& view, const Vector& d, const Vector& toLight,
+  const Exponent& exponent, const View& view, const Vector& d, const LightView& light,
   const Halfway& halfway, const LocalView& localView, bool gateCrosses)
 {
+  const Vector& toLight = light.ToLight;
   // The lobe's axis against the cell's normals: Blinn's H against N, or Phong's reflected
   // vector (which turns twice as far as N) against V.
   double centre, width;
@@ -655,7 +814,7 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
     {
       return halfway.LobeZero ? 0.0 : Infinite;
     }
-    width = cell.Cone + cell.Spread + view.Spread / halfway.Least;
+    width = cell.Cone + cell.Spread + (view.Spread + light.Spread) / halfway.Least;
   }
   else
   {
@@ -663,7 +822,7 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
     from = { { 2.0 * c * d[0] - toLight[0], 2.0 * c * d[1] - toLight[1],
       2.0 * c * d[2] - toLight[2] } };
     axis = view.Centre;
-    width = 2.0 * (cell.Cone + cell.Spread) + view.Spread;
+    width = 2.0 * (cell.Cone + cell.Spread) + view.Spread + light.Spread;
   }
   // Most cells lie beyond the lobe: told by a cosine, before any angle is taken. With
   // Cut <= pi/2, cos(Cut + width) >= cos(Cut) (1 - width^2 / 2) - sin(Cut) width, which needs
@@ -688,21 +847,44 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   {
     return largest;
   }
-  // The view vector's skew (MakeLocalView) turns the lobe's axis by that angle (Phong) or by
-  // at most that over |L + V| (Blinn: dH = dV across H / |L + V|); within the cell's angles,
-  // the lobe changes by at most its slope there times the turn.
+  // The view vector's skew (MakeLocalView), and a point light's, turn the lobe's axis by
+  // that angle (Phong) or by at most that over |L + V| (Blinn: dH = dV across H / |L + V|);
+  // within the cell's angles, the lobe changes by at most its slope there times the turn.
   // Phong's reflection of the interpolated normal turns it further (ReflectionSkew).
-  const double turn =
-    scene.Blinn ? localView.Skew / halfway.Least : localView.Skew + cell.ReflectionSkew;
+  const bool positional = light.Spread > 0.0;
+  const double turn = scene.Blinn
+    ? (localView.Skew + light.Local.Skew) / halfway.Least
+    : localView.Skew + (positional ? ReflectionSkew(cell, light.Local) : cell.ReflectionSkew);
   const double skew = turn > 0.0 ? turn * SlopeBeyond(a, exponent) : 0.0;
-  // The lobe's axis fixed (the cap of the normals, or of Phong's reflected vectors), then the
-  // view vector's spread over the triangle.
-  const Cap& lobeCap = scene.Blinn ? cell.Normals : cell.Reflections;
+  // The lobe's axis fixed (the cap of the normals, or of Phong's reflected vectors, which a
+  // point light's spread widens), then the spread of the view vector (and for Blinn the
+  // light's) over the triangle.
+  const Cap reflections =
+    !scene.Blinn && positional ? Cap(2.0 * cell.Spread + light.Local.Spread) : Cap();
+  const Cap& lobeCap = scene.Blinn ? cell.Normals : (positional ? reflections : cell.Reflections);
   const LobeTerms lobe = MakeLobeTerms(a, centre + width, exponent);
-  const double viewSpread = localView.Spread > 0.0 && exponent.N != 0.0
-    ? ViewSpreadBound(lobe, lobeCap, localView, scene.Blinn, halfway.Least)
+  const LocalView& turningLight = scene.Blinn ? light.Local : LocalView();
+  const bool spread = localView.Spread > 0.0 || turningLight.Spread > 0.0;
+  const double axisSpread = spread && exponent.N != 0.0
+    ? ViewSpreadBound(lobe, lobeCap, localView, turningLight, scene.Blinn, halfway.Least)
     : 0.0;
-  return std::min(largest, CapBound(lobeCap, lobe, exponent.N) + viewSpread + skew);
+  return std::min(largest, CapBound(lobeCap, lobe, exponent.N) + axisSpread + skew);
+}
+
+//------------------------------------------------------------------------------
+// Phong's ReflectionSkew under a point light, whose direction l_i differs from vertex to
+// vertex (in a cap of radius sigma): with l_i = lbar + lambda_i (lbar = sum b_i l_i) and
+// n_i = N + d_i, sum b_i r(n_i, l_i) - r(N, lbar) is ReflectionSkew's 8 (1 - cos R) plus
+// 2 sum b_i ((N.lambda_i) d_i + (d_i.lambda_i) n_i), at most 4 sin(sigma) sqrt(2 (1 - cos R))
+// (|n_i| = 1, sum b_i |lambda_i|^2 <= sin^2 sigma, sum b_i |d_i|^2 <= 2 (1 - cos R)); and
+// r(N, lbar) - r(N, L) = reflect(lbar - L), |lbar - L| <= 1 - cos(sigma) + the light vector's
+// skew (MakeLocalSpread). Their sum e bounds the angle by asin(e) while e < 1.
+double vtkPhongGouraudBound::ReflectionSkew(const Cell& cell, const LocalView& localLight)
+{
+  const double half = std::sin(0.5 * cell.Spread);
+  const double e = 16.0 * half * half + 8.0 * std::sin(localLight.Spread) * half +
+    (1.0 - std::cos(localLight.Spread)) + localLight.Skew;
+  return e < 1.0 ? std::asin(e) : Infinite;
 }
 
 //------------------------------------------------------------------------------
@@ -721,26 +903,26 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
 //   derivatives of two normalizations), so it adds tan^2 rho / 2 (Hs k^2 + G1 (k^2 + 1.1548 k)).
 // The kink of an n = 1 lobe grows from sin(R) / 2 to sin(R + k rho) / 2.
 double vtkPhongGouraudBound::ViewSpreadBound(const LobeTerms& lobe, const Cap& normals,
-  const LocalView& localView, bool blinn, double halfwayLeast)
+  const LocalView& localView, const LocalView& localLight, bool blinn, double halfwayLeast)
 {
   const Cap& views = localView.Directions;
-  if (!(views.Spread > 0.0))
-  {
-    return 0.0;
-  }
-  if (views.Spread >= 0.25 * Pi || !(halfwayLeast > 0.0 || !blinn))
+  const Cap& lights = localLight.Directions;
+  if (views.Spread >= 0.25 * Pi || lights.Spread >= 0.25 * Pi || !(halfwayLeast > 0.0 || !blinn))
   {
     return Infinite;
   }
   const double k = blinn ? 1.0 / halfwayLeast : 1.0;
-  const double mixed = lobe.Hx * normals.Tangent * views.Tangent * k;
-  const double alone = blinn
-    ? views.HalfTangent2 * (lobe.Hs * k * k + lobe.G1 * (k * k + 1.1548 * k))
-    : views.HalfTangent2 * (lobe.Hs + 2.0 * lobe.G1 * views.Radial);
+  // Blinn's H = (v + l) / |v + l| turns with both: |dh| <= |e_v| / cos + |e_l| / cos, whose
+  // sum over b_i of squares is at most (tan rho_v + tan rho_l)^2.
+  const double tangent = views.Tangent + lights.Tangent;
+  const double mixed = lobe.Hx * normals.Tangent * tangent * k;
+  const double alone = blinn ? 0.5 * tangent * tangent * (lobe.Hs + lobe.G1) * k * k +
+      (views.HalfTangent2 + lights.HalfTangent2) * lobe.G1 * 1.1548 * k
+                             : views.HalfTangent2 * (lobe.Hs + 2.0 * lobe.G1 * views.Radial);
   double kink = 0.0;
   if (lobe.Kink)
   {
-    const double widest = std::min(normals.Spread + k * views.Spread, HalfPi);
+    const double widest = std::min(normals.Spread + k * (views.Spread + lights.Spread), HalfPi);
     kink = 0.5 * (std::sin(widest) - std::sin(normals.Spread));
   }
   return mixed + alone + kink;

@@ -29,12 +29,16 @@
  * map of 6 x 8 x 8 cells), keeping per cell the cone of cap axes, the largest cap radius, the
  * largest triangle radius and the ball around its points; Bound() then costs cells x lights
  * per frame and bounds every triangle of a cell at once (the cell's angles widen by its cone,
- * and in perspective by the view vector's cone over the cell's ball). Only directional lights
- * are bounded. A perspective view adds the view vector's spread over a triangle, from
- * Waldron's identity for the normal and the view vector interpolated together
- * (ViewSpreadBound), and the turn of the lobe's axis by the skew of the interpolated view
- * vector (MakeLocalView); Phong adds that of the reflected interpolated normal
- * (ReflectionSkew).
+ * and in perspective by the view vector's cone over the cell's ball). Directional lights and
+ * point lights without attenuation are bounded (not spot lights). A perspective view adds
+ * the view vector's spread over a triangle, from Waldron's identity for the normal and the
+ * view vector interpolated together (ViewSpreadBound), and the turn of the lobe's axis by the
+ * skew of the interpolated view vector (MakeLocalView); Phong adds that of the reflected
+ * interpolated normal (ReflectionSkew). A point light's direction does over a triangle what
+ * the view vector does (MakeLightView: Blinn's H turns with both; Phong's reflected vectors
+ * spread further; the diffuse term, LightSpreadBound), and over a cell's ball widens its
+ * angles. Under a point light only every sum goes per vertex: the other mode lights the
+ * directional lights' diffuse term alone per fragment.
  */
 
 #ifndef vtkPhongGouraudBound_h
@@ -62,6 +66,9 @@ public:
       std::array<double, 3> ToLightMC; ///< L, from the surface towards the light
       double Diffuse = 0.0;            ///< kd*Cd*Ld*I, the largest over channels and sides
       double Specular = 0.0;           ///< ks*Cs*Ls*I*normalization, likewise
+      /// A point light (no cone, no attenuation) at PositionMC instead of the direction.
+      bool Positional = false;
+      std::array<double, 3> PositionMC = { { 0.0, 0.0, 0.0 } };
       bool operator==(const Light& other) const;
     };
     std::vector<Light> Lights;
@@ -131,6 +138,8 @@ private:
   struct Cap
   {
     explicit Cap(double spread = 0.0);
+    Cap(double spread, double sine, double cosine); ///< with the sine and cosine of spread
+    void SetTerms(double sine, double cosine);
     double Spread, HalfTangent2 = 0.0, Radial = 0.0, Kink = 0.0;
     double Tangent = 0.0; ///< tan(R): the cap's sum of b_i |n_i - m|^2 over |m|, rooted
   };
@@ -169,17 +178,28 @@ private:
     bool Unbounded = false;
   };
   static bool MakeView(const Scene& scene, const Cell& cell, View& view);
-  /// The view vector over one triangle of a cell: its spread (the angular radius of its
-  /// vertices' directions) and its skew (how far a fragment's view vector is from the
-  /// normalized interpolation of the vertices' unit ones); both 0 in parallel projection.
+  /// The direction from one triangle of a cell to a point (the eye, a point light): its
+  /// spread (the angular radius of the vertices' directions) and its skew (how far a
+  /// fragment's direction is from the normalized interpolation of the vertices' unit ones);
+  /// both 0 for a point at infinity.
   struct LocalView
   {
     double Spread = 0.0;
     double Skew = 0.0;
-    Cap Directions; ///< the cap of the vertices' unit view vectors (radius Spread)
+    Cap Directions; ///< the cap of the vertices' unit directions (radius Spread)
   };
   static LocalView MakeLocalView(const Scene& scene, const Cell& cell, const View& view);
-  static Halfway MakeHalfway(const Scene& scene, const View& view, const Vector& toLight);
+  static LocalView MakeLocalSpread(double radius, double nearest);
+  /// One light over one cell: its direction from the cell's centre, the half-angle of the
+  /// cone holding it over the cell's ball (0 for a directional light) and over one triangle.
+  struct LightView
+  {
+    Vector ToLight = { { 0.0, 0.0, 1.0 } };
+    double Spread = 0.0, CosSpread = 1.0, SinSpread = 0.0;
+    LocalView Local;
+  };
+  static bool MakeLightView(const Scene::Light& light, const Cell& cell, LightView& lightView);
+  static Halfway MakeHalfway(const Scene& scene, const View& view, const LightView& light);
   /// The lobe's exponent n, and what depends on it alone: made once per bound.
   struct Exponent
   {
@@ -213,16 +233,27 @@ private:
   static LobeTerms MakeLobeTerms(const NearAngle& nearAngle, double farAngle, const Exponent& exponent);
   static double CapBound(const Cap& cap, const LobeTerms& lobe, double n);
   static double ViewSpreadBound(const LobeTerms& lobe, const Cap& normals,
-    const LocalView& localView, bool blinn, double halfwayLeast);
+    const LocalView& localView, const LocalView& localLight, bool blinn, double halfwayLeast);
+  static double LightSpreadBound(const Cap& normals, const LocalView& localLight,
+    double cosNear, double cosFar, double sinFar);
+  static double ReflectionSkew(const Cell& cell, const LocalView& localLight);
+  struct CellScratch
+  {
+    std::vector<LightView> Lights;
+    std::vector<Halfway> Halfways;
+  };
+  static bool MakeLightViews(
+    const Cell& cell, const Scene& scene, const View& view, CellScratch& scratch, bool& positional);
   static Bounds CellBound(const Cell& cell, const Scene& scene, const Exponent& exponent,
-    const View& view, const std::vector<Halfway>& halfways);
+    const View& view, const std::vector<Halfway>& halfways, CellScratch& scratch);
   static double LobeBound(
     const Cap& cap, const NearAngle& nearAngle, double farAngle, const Exponent& exponent);
-  static double DiffuseBound(const Cap& normals, double cosNear, double sinFar, bool terminator);
+  static double DiffuseBound(const Cap& normals, double cosNear, double cosFar, double sinFar);
+  static double DiffuseCurvature(double cosNear, double cosFar);
   static double SlopeBeyond(const NearAngle& a, const Exponent& exponent);
   static double ReflectionSkew(double spread);
   static double SpecularBound(const Cell& cell, const Scene& scene, const Exponent& exponent,
-    const View& view, const Vector& d, const Vector& toLight, const Halfway& halfway,
+    const View& view, const Vector& d, const LightView& light, const Halfway& halfway,
     const LocalView& localView, bool gateCrosses);
   void AddPolygon(vtkIdType count, const vtkIdType* ids, vtkPoints* points, vtkDataArray* normals);
 

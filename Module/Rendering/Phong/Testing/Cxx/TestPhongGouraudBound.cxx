@@ -58,20 +58,23 @@ Vector RandomDirection(std::mt19937& random)
   return Unit({ { normal(random), normal(random), normal(random) } });
 }
 
-// The model's diffuse and specular light sums at one point (directional lights; N, V unit):
-// what per-vertex lighting evaluates at the vertices and per-fragment lighting at each
-// fragment.
+// The model's diffuse and specular light sums at one point p (N, V unit; directional and
+// point lights): what per-vertex lighting evaluates at the vertices and per-fragment lighting
+// at each fragment.
 struct Sums
 {
   double Diffuse = 0.0, Specular = 0.0;
 };
 
-Sums Shade(const Scene& scene, const Vector& n, const Vector& v)
+Sums Shade(const Scene& scene, const Vector& n, const Vector& v, const Vector& p)
 {
   Sums sums;
   for (const Scene::Light& light : scene.Lights)
   {
-    const Vector& l = light.ToLightMC;
+    const Vector l = light.Positional
+      ? Unit({ { light.PositionMC[0] - p[0], light.PositionMC[1] - p[1],
+          light.PositionMC[2] - p[2] } })
+      : light.ToLightMC;
     const double nl = Dot(n, l);
     sums.Diffuse += light.Diffuse * std::max(nl, 0.0);
     double c;
@@ -134,7 +137,7 @@ vtkPhongGouraudBound::Bounds BruteForce(vtkPolyData* mesh, const Scene& scene)
         for (int i = 0; i < 3; ++i)
         {
           sided[i] = { { side * n[i][0], side * n[i][1], side * n[i][2] } };
-          atVertex[i] = Shade(scene, sided[i], ToEye(scene, p[i]));
+          atVertex[i] = Shade(scene, sided[i], ToEye(scene, p[i]), p[i]);
         }
         for (int i = 0; i <= Steps; ++i)
         {
@@ -155,7 +158,7 @@ vtkPhongGouraudBound::Bounds BruteForce(vtkPolyData* mesh, const Scene& scene)
             {
               continue;
             }
-            const Sums fragment = Shade(scene, Unit(normal), ToEye(scene, position));
+            const Sums fragment = Shade(scene, Unit(normal), ToEye(scene, position), position);
             Sums vertex;
             for (int k = 0; k < 3; ++k)
             {
@@ -241,6 +244,17 @@ Scene RandomScene(std::mt19937& random, int index, const double centre[3], doubl
   if (index % 3 == 0) // a headlight: L = V, where the highlight faces the eye
   {
     scene.Lights[0].ToLightMC = scene.ToEyeMC;
+  }
+  if (index % 4 == 1) // a point light 1.2 to 4 times `scale` from `centre`
+  {
+    Scene::Light& point = scene.Lights.back();
+    point.Positional = true;
+    const Vector direction = RandomDirection(random);
+    const double reach = scale * (1.2 + 2.8 * uniform(random));
+    for (int i = 0; i < 3; ++i)
+    {
+      point.PositionMC[i] = centre[i] + reach * direction[i];
+    }
   }
   return scene;
 }
@@ -445,8 +459,10 @@ void RandomTriangle(std::mt19937& random, int kind, vtkPoints* points, vtkDataAr
 
 // A random scene for one triangle: 1 to 3 directional lights, one of them in one case of four
 // the headlight (L = V) and in one of eight in the plane of the cap's axis (N.L = 0 at the
-// terminator); the eye at 1.5 to 20 times the triangle's size, or at infinity.
-Scene RandomTriangleScene(std::mt19937& random, bool blinn, const Vector& axis, double size)
+// terminator), and each in one case of three a point light 1.5 to 20 times the triangle's
+// size from its centre; the eye as far, or at infinity.
+Scene RandomTriangleScene(
+  std::mt19937& random, bool blinn, const Vector& axis, const Vector& centre, double size)
 {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double shininess[] = { 1.0, 2.0, 3.0, 10.0, 40.0, 200.0, 1.0e3, 1.0e4 };
@@ -475,6 +491,18 @@ Scene RandomTriangleScene(std::mt19937& random, bool blinn, const Vector& axis, 
   else if (random() % 8 == 0)
   {
     scene.Lights[0].ToLightMC = Turned(axis, 1.5707963267948966, 6.283185307179586 * unit(random));
+  }
+  for (Scene::Light& light : scene.Lights)
+  {
+    if (random() % 3 == 0)
+    {
+      light.Positional = true;
+      const double reach = (1.5 + 18.5 * unit(random)) * std::max(size, 1.0e-3);
+      for (int c = 0; c < 3; ++c)
+      {
+        light.PositionMC[c] = centre[c] + reach * light.ToLightMC[c];
+      }
+    }
   }
   return scene;
 }
@@ -532,7 +560,9 @@ bool CheckRandomTriangles(std::mt19937& random, int perLobe, double& tightest)
       const double size = vtkBoundingBox(bounds).GetDiagonalLength();
       Vector axis;
       normals->GetTuple(0, axis.data());
-      const Scene scene = RandomTriangleScene(random, lobe == 0, axis, size);
+      const Vector centre = { { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+        0.5 * (bounds[4] + bounds[5]) } };
+      const Scene scene = RandomTriangleScene(random, lobe == 0, axis, centre, size);
       vtkPhongGouraudBound bound;
       bound.Update({ triangle.GetPointer() }, 1);
       const vtkPhongGouraudBound::Bounds limit = bound.Bound(scene);
@@ -645,7 +675,7 @@ int TestPhongGouraudBound(int argc, char* argv[])
     auto mesh = MakeMesh(0, random);
     vtkPhongGouraudBound bound;
     bound.Update({ mesh.GetPointer() }, 1);
-    const Scene first = RandomScene(random, 1, origin, 1.0);
+    const Scene first = RandomScene(random, 3, origin, 1.0); // directional: both modes finite
     const Scene second = RandomScene(random, 2, origin, 1.0);
     const auto a = bound.Bound(first);
     const auto b = bound.Bound(second);
