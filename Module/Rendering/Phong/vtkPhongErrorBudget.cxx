@@ -208,15 +208,15 @@ bool vtkPhongErrorBudget::MakeScene(vtkRenderer* ren, vtkActor* actor,
 }
 
 //------------------------------------------------------------------------------
-// Point lights without attenuation (VTK's default (1, 0, 0)): the bound takes no attenuation's
-// curvature, so an attenuated one leaves the scene unbounded (false).
+// Point lights without attenuation (VTK's default (1, 0, 0); the shader's own test,
+// vtkPhongLightCulling::IsAttenuated): the bound takes no attenuation's curvature, so an
+// attenuated one leaves the scene unbounded (false).
 bool vtkPhongErrorBudget::AddPointLights(vtkRenderer* ren, const vtkPhongShaderPlan& plan,
   vtkMatrix4x4* viewToModel, const double weights[3][3], vtkPhongGouraudBound::Scene& scene)
 {
   for (vtkLight* light : plan.PointLights)
   {
-    const double* attenuation = light->GetAttenuationValues();
-    if (!(attenuation[0] == 1.0 && attenuation[1] == 0.0 && attenuation[2] == 0.0))
+    if (vtkPhongLightCulling::IsAttenuated(light))
     {
       return false;
     }

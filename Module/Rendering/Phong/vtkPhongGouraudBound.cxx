@@ -19,8 +19,6 @@ constexpr double Pi = 3.14159265358979323846;
 constexpr double HalfPi = 0.5 * Pi;
 constexpr double Infinite = std::numeric_limits<double>::infinity();
 constexpr int CellsPerEdge = 8; // cube-map cells per face edge: 6 * 8 * 8 cells
-// First-order terms (the view vector's spread over a triangle) take this margin; the brute
-// force of TestPhongGouraudBound found at most 1.003 times the unmargined bound.
 // A lobe value small enough to bound a cell's lobe by it, without its own bound: 1e-7 of the
 // light is far below the float rounding margin (vtkPhongErrorBudget).
 constexpr double NegligibleLobe = 1.0e-7;
@@ -327,7 +325,7 @@ void vtkPhongGouraudBound::Update(const std::vector<vtkPolyData*>& blocks, vtkMT
     cell.Reach = 0.5 * Norm(diagonal);
     cell.Normals = Cap(cell.Spread);
     cell.Reflections = Cap(2.0 * cell.Spread);
-    cell.ReflectionSkew = ReflectionSkew(cell.Spread);
+    cell.ReflectionSkew = ReflectionSkew(cell.Spread, LocalView());
     cell.CosWidth = std::cos(cell.Cone + cell.Spread);
     cell.SinWidth = std::sin(cell.Cone + cell.Spread);
   }
@@ -707,14 +705,22 @@ bool vtkPhongGouraudBound::MakeLightView(
 
 //------------------------------------------------------------------------------
 // Phong's lobe reflects the interpolated normal N(b) = m / |m|, m = sum b_i n_i, where the cap
-// model (radius 2R) interpolates the reflected vectors r_i = 2 (n_i.L) n_i - L. With
-// d_i = n_i - N, sum b_i r_i = r(N) + 4 (|m| - 1)(N.L) N + 2 sum b_i (d_i.L) d_i, and
-// sum b_i |d_i|^2 = 2 (1 - |m|) <= 2 (1 - cos R): the two differ by at most 8 (1 - cos R),
-// and their directions by an angle whose sine is at most that.
-double vtkPhongGouraudBound::ReflectionSkew(double spread)
+// model interpolates the reflected vectors r_i = r(n_i, l_i) = 2 (n_i.l_i) n_i - l_i. With
+// d_i = n_i - N, for one light direction L, sum b_i r_i = r(N) + 4 (|m| - 1)(N.L) N +
+// 2 sum b_i (d_i.L) d_i, and sum b_i |d_i|^2 = 2 (1 - |m|) <= 2 (1 - cos R): the two differ by
+// at most 8 (1 - cos R). A point light's direction l_i differs from vertex to vertex, in a cap
+// of radius sigma (`light`; LocalView() for a directional light): with l_i = lbar + lambda_i
+// (lbar = sum b_i l_i), sum b_i r_i - r(N, lbar) adds 2 sum b_i ((N.lambda_i) d_i +
+// (d_i.lambda_i) n_i), at most 4 sin(sigma) sqrt(2 (1 - cos R)) (|n_i| = 1, sum b_i
+// |lambda_i|^2 <= sin^2 sigma); and r(N, lbar) - r(N, L) = reflect(lbar - L), |lbar - L| <=
+// 1 - cos(sigma) + the light vector's skew (MakeLocalSpread). Their sum e bounds the angle
+// between the directions by asin(e) while e < 1.
+double vtkPhongGouraudBound::ReflectionSkew(double spread, const LocalView& light)
 {
   const double half = std::sin(0.5 * spread);
-  return std::asin(std::min(16.0 * half * half, 1.0));
+  const double e = 16.0 * half * half + 8.0 * std::sin(light.Spread) * half +
+    (1.0 - std::cos(light.Spread)) + light.Skew;
+  return e < 1.0 ? std::asin(e) : Infinite;
 }
 
 //------------------------------------------------------------------------------
@@ -740,7 +746,7 @@ double vtkPhongGouraudBound::SlopeBeyond(const NearAngle& a, const Exponent& exp
 
 //------------------------------------------------------------------------------
 // max(N.L, 0): the lobe bound with n = 1 (the terminator a kink), never more than the
-// term's largest value: for n = 1, Hs = cos(near), G1 = sin(min(far, pi/2)).
+// term's largest value: for n = 1, Hs = DiffuseCurvature, G1 = sin(min(far, pi/2)).
 double vtkPhongGouraudBound::DiffuseBound(
   const Cap& normals, double cosNear, double cosFar, double sinFar)
 {
@@ -769,32 +775,25 @@ double vtkPhongGouraudBound::DiffuseCurvature(double cosNear, double cosFar)
 
 //------------------------------------------------------------------------------
 // What a point light's spread over a triangle adds to the diffuse term's bound: Waldron's
-// identity for the normal and the light's direction l interpolated together, as for Phong's
-// reflected vector and the view vector (ViewSpreadBound), with n = 1 (Hx = 1): the mixed part
-// tan R tan sigma, the light's cap alone E(sigma), the kink widened to sin(R + sigma) / 2,
-// and the skew of the interpolated light vector at the cosine's slope sin.
+// identity for the normal and the light's direction l interpolated together is
+// ViewSpreadBound's for Phong, whose lobe's axis is the view vector, with the light's
+// directions in its place and the n = 1 lobe's terms (Hs DiffuseCurvature, G1 sin of the far
+// angle, Hx = 1, the kink at the terminator); then the skew of the interpolated light vector
+// at the cosine's slope, sin.
 double vtkPhongGouraudBound::LightSpreadBound(
   const Cap& normals, const LocalView& localLight, double cosNear, double cosFar, double sinFar)
 {
-  const Cap& lights = localLight.Directions;
-  if (!(lights.Spread > 0.0))
-  {
-    return 0.0;
-  }
-  if (lights.Spread >= 0.25 * Pi || normals.Spread >= 0.25 * Pi)
+  if (normals.Spread >= 0.25 * Pi)
   {
     return Infinite;
   }
-  const double mixed = normals.Tangent * lights.Tangent;
-  const double alone =
-    lights.HalfTangent2 * (DiffuseCurvature(cosNear, cosFar) + 2.0 * sinFar * lights.Radial);
-  double kink = 0.0;
-  if (cosFar <= 0.0)
-  {
-    const double widest = std::min(normals.Spread + lights.Spread, HalfPi);
-    kink = 0.5 * (std::sin(widest) - std::sin(normals.Spread));
-  }
-  return mixed + alone + kink + localLight.Skew * sinFar;
+  LobeTerms cosine;
+  cosine.Hs = DiffuseCurvature(cosNear, cosFar);
+  cosine.G1 = sinFar;
+  cosine.Hx = 1.0;
+  cosine.Kink = cosFar <= 0.0;
+  return ViewSpreadBound(cosine, normals, localLight, LocalView(), false, 1.0) +
+    localLight.Skew * sinFar;
 }
 
 //------------------------------------------------------------------------------
@@ -852,10 +851,12 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   // within the cell's angles, the lobe changes by at most its slope there times the turn.
   // Phong's reflection of the interpolated normal turns it further (ReflectionSkew).
   const bool positional = light.Spread > 0.0;
-  const double turn = scene.Blinn
-    ? (localView.Skew + light.Local.Skew) / halfway.Least
-    : localView.Skew + (positional ? ReflectionSkew(cell, light.Local) : cell.ReflectionSkew);
-  const double skew = turn > 0.0 ? turn * SlopeBeyond(a, exponent) : 0.0;
+  const double turn = scene.Blinn ? (localView.Skew + light.Local.Skew) / halfway.Least
+                                  : localView.Skew +
+      (positional ? ReflectionSkew(cell.Spread, light.Local) : cell.ReflectionSkew);
+  // A lobe with no slope there (n = 0) is not turned, however far its axis turns.
+  const double slope = turn > 0.0 ? SlopeBeyond(a, exponent) : 0.0;
+  const double skew = slope > 0.0 ? turn * slope : 0.0;
   // The lobe's axis fixed (the cap of the normals, or of Phong's reflected vectors, which a
   // point light's spread widens), then the spread of the view vector (and for Blinn the
   // light's) over the triangle.
@@ -869,22 +870,6 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
     ? ViewSpreadBound(lobe, lobeCap, localView, turningLight, scene.Blinn, halfway.Least)
     : 0.0;
   return std::min(largest, CapBound(lobeCap, lobe, exponent.N) + axisSpread + skew);
-}
-
-//------------------------------------------------------------------------------
-// Phong's ReflectionSkew under a point light, whose direction l_i differs from vertex to
-// vertex (in a cap of radius sigma): with l_i = lbar + lambda_i (lbar = sum b_i l_i) and
-// n_i = N + d_i, sum b_i r(n_i, l_i) - r(N, lbar) is ReflectionSkew's 8 (1 - cos R) plus
-// 2 sum b_i ((N.lambda_i) d_i + (d_i.lambda_i) n_i), at most 4 sin(sigma) sqrt(2 (1 - cos R))
-// (|n_i| = 1, sum b_i |lambda_i|^2 <= sin^2 sigma, sum b_i |d_i|^2 <= 2 (1 - cos R)); and
-// r(N, lbar) - r(N, L) = reflect(lbar - L), |lbar - L| <= 1 - cos(sigma) + the light vector's
-// skew (MakeLocalSpread). Their sum e bounds the angle by asin(e) while e < 1.
-double vtkPhongGouraudBound::ReflectionSkew(const Cell& cell, const LocalView& localLight)
-{
-  const double half = std::sin(0.5 * cell.Spread);
-  const double e = 16.0 * half * half + 8.0 * std::sin(localLight.Spread) * half +
-    (1.0 - std::cos(localLight.Spread)) + localLight.Skew;
-  return e < 1.0 ? std::asin(e) : Infinite;
 }
 
 //------------------------------------------------------------------------------

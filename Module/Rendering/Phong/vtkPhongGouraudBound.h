@@ -159,7 +159,7 @@ private:
     Cap Normals;                           ///< the cap of the largest radius, Spread
     Cap Reflections;                       ///< Phong's reflected vectors' cap, 2 Spread
     double CosWidth = 1.0, SinWidth = 0.0; ///< of Cone + Spread, the normals' angles around Axis
-    double ReflectionSkew = 0.0;           ///< ReflectionSkew(Spread), Phong's reflected vector
+    double ReflectionSkew = 0.0; ///< ReflectionSkew(Spread) of a directional light (Phong)
   };
   /// The view vector over the whole surface: a cone, and the eye's least distance.
   struct View
@@ -230,13 +230,13 @@ private:
     double Hs = 0.0, G1 = 0.0, Hx = 0.0;
     bool Kink = false; ///< n = 1 and the clamp at c = 0 within the range
   };
-  static LobeTerms MakeLobeTerms(const NearAngle& nearAngle, double farAngle, const Exponent& exponent);
+  static LobeTerms MakeLobeTerms(
+    const NearAngle& nearAngle, double farAngle, const Exponent& exponent);
   static double CapBound(const Cap& cap, const LobeTerms& lobe, double n);
   static double ViewSpreadBound(const LobeTerms& lobe, const Cap& normals,
     const LocalView& localView, const LocalView& localLight, bool blinn, double halfwayLeast);
-  static double LightSpreadBound(const Cap& normals, const LocalView& localLight,
-    double cosNear, double cosFar, double sinFar);
-  static double ReflectionSkew(const Cell& cell, const LocalView& localLight);
+  static double LightSpreadBound(
+    const Cap& normals, const LocalView& localLight, double cosNear, double cosFar, double sinFar);
   struct CellScratch
   {
     std::vector<LightView> Lights;
@@ -251,7 +251,7 @@ private:
   static double DiffuseBound(const Cap& normals, double cosNear, double cosFar, double sinFar);
   static double DiffuseCurvature(double cosNear, double cosFar);
   static double SlopeBeyond(const NearAngle& a, const Exponent& exponent);
-  static double ReflectionSkew(double spread);
+  static double ReflectionSkew(double spread, const LocalView& light);
   static double SpecularBound(const Cell& cell, const Scene& scene, const Exponent& exponent,
     const View& view, const Vector& d, const LightView& light, const Halfway& halfway,
     const LocalView& localView, bool gateCrosses);

@@ -231,6 +231,14 @@ double vtkPhongLightCulling::ContributionBound(vtkLight* light, bool isSpot,
 }
 
 //------------------------------------------------------------------------------
+bool vtkPhongLightCulling::IsAttenuated(vtkLight* light)
+{
+  const double* values = light->GetAttenuationValues();
+  return LightValue(values[0]) != 1.0 || LightValue(values[1]) != 0.0 ||
+    LightValue(values[2]) != 0.0;
+}
+
+//------------------------------------------------------------------------------
 // Colours from scalars or textures replace Ca and Cd and are at most 1 (8-bit colours), so
 // those count as max(1, the material's). The lobe normalization is folded into Cs as the
 // material uniforms do (with the front material's lobe on both sides).

@@ -64,6 +64,13 @@ public:
    */
   static void MaterialWeights(vtkProperty* front, vtkProperty* back, double weights[3][3]);
 
+  /**
+   * Whether a positional light fades with distance: its attenuation coefficients (c, l, q),
+   * as the uniforms upload them (non-finite or negative ones as 0), are not (1, 0, 0). Where
+   * they are, the shader attenuates it by exactly 1.
+   */
+  static bool IsAttenuated(vtkLight* light);
+
 private:
   static bool ActorBoxVC(vtkRenderer* ren, vtkActor* actor, double boxVC[6]);
 };

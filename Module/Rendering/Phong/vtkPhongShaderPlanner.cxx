@@ -51,13 +51,6 @@ bool HasAmbientLight(vtkLight* light)
       IsPositive(Sanitized(color[2])));
 }
 
-// Whether a positional light fades with distance: (c, l, q) is not (1, 0, 0).
-bool IsAttenuated(vtkLight* light)
-{
-  const double* values = light->GetAttenuationValues();
-  return Sanitized(values[0]) != 1.0 || Sanitized(values[1]) != 0.0 || Sanitized(values[2]) != 0.0;
-}
-
 // Whether a spot's light falls off inside its cone: its exponent is not 1.
 bool HasSpotFalloff(vtkLight* light)
 {
@@ -334,8 +327,9 @@ void vtkPhongShaderPlanner::SetLightFeatures(const Terms& terms, bool allFeature
   features.Set(Feature::Point, point);
   features.Set(Feature::Spot, spot);
   features.Set(Feature::Positional, terms.LightSums && positional);
-  const bool pointAttenuation = point && (allFeatures || Any(plan.PointLights, IsAttenuated));
-  const bool spotAttenuation = spot && (allFeatures || Any(plan.SpotLights, IsAttenuated));
+  const auto attenuated = &vtkPhongLightCulling::IsAttenuated;
+  const bool pointAttenuation = point && (allFeatures || Any(plan.PointLights, attenuated));
+  const bool spotAttenuation = spot && (allFeatures || Any(plan.SpotLights, attenuated));
   features.Set(Feature::PointAttenuation, pointAttenuation);
   features.Set(Feature::SpotAttenuation, spotAttenuation);
   features.Set(Feature::Attenuation, pointAttenuation || spotAttenuation);
