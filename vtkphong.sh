@@ -209,6 +209,17 @@ release_unmount() {
   release_mounts=()
 }
 
+release_clear_stale_mounts() { # release_clear_stale_mounts ROOT
+  # A run killed outright (SIGKILL: no EXIT trap) leaves its mounts in the root, and mounting
+  # over them fails ("sysfs already mounted": CI, 2026-11-28). This runs in the stage's own
+  # mount namespace, so unmounting them here never touches another run using the same root.
+  local target
+  awk -v prefix="$1/" 'index($5, prefix) == 1 { print $5 }' /proc/self/mountinfo | sort -r |
+    while read -r target; do
+      umount "$target" 2>/dev/null || umount -l "$target" || true
+    done
+}
+
 release_mount() { # release_mount ROOT SOURCE TARGET-IN-ROOT [mount options...]
   local target="$1$3" source="$2"
   shift 3
@@ -249,7 +260,14 @@ test_release() { # test_release CODENAME [COMMAND]
   local root_dir suffix
   root_dir="$(release_root "$codename")"
   suffix="$(release_build_suffix "$codename")"
+  if [ -z "${VTKPHONG_OWN_MOUNT_NAMESPACE:-}" ] && command -v unshare >/dev/null 2>&1; then
+    # In a mount namespace of its own, the stage's mounts vanish with it however it ends, and
+    # two stages sharing a root (CI beside a developer's run) never see each other's.
+    VTKPHONG_OWN_MOUNT_NAMESPACE=1 exec unshare --mount --propagation private \
+      "$root/vtkphong.sh" "test-$suffix" "$inner"
+  fi
   release_create_root "$codename" "$root_dir"
+  release_clear_stale_mounts "$root_dir"
   cp /etc/resolv.conf "$root_dir/etc/resolv.conf"
   # Unmount on every way out: a signal exits, and exiting runs the EXIT trap.
   trap release_unmount EXIT
