@@ -142,6 +142,7 @@ private:
     void SetTerms(double sine, double cosine);
     double Spread, HalfTangent2 = 0.0, Radial = 0.0, Kink = 0.0;
     double Tangent = 0.0; ///< tan(R): the cap's sum of b_i |n_i - m|^2 over |m|, rooted
+    double Cosine = 1.0;  ///< cos(R)
   };
   struct Cell
   {
@@ -180,13 +181,14 @@ private:
   static bool MakeView(const Scene& scene, const Cell& cell, View& view);
   /// The direction from one triangle of a cell to a point (the eye, a point light): its
   /// spread (the angular radius of the vertices' directions) and its skew (how far a
-  /// fragment's direction is from the normalized interpolation of the vertices' unit ones);
-  /// both 0 for a point at infinity.
+  /// fragment's direction is from the normalized interpolation of the vertices' unit ones),
+  /// each by its tangent (at least the angle); both 0 for a point at infinity.
   struct LocalView
   {
     double Spread = 0.0;
     double Skew = 0.0;
-    Cap Directions; ///< the cap of the vertices' unit directions (radius Spread)
+    Cap Directions; ///< the cap of the vertices' unit directions (Spread, the sine and cosine
+                    ///< of the radius)
   };
   static LocalView MakeLocalView(const Scene& scene, const Cell& cell, const View& view);
   static LocalView MakeLocalSpread(double radius, double nearest);
