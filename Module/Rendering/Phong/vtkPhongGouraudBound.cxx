@@ -33,22 +33,6 @@ double Norm(const Vector& a)
   return std::sqrt(Dot(a, a));
 }
 
-// The angle between unit vectors, accurate at 0 and pi: there by the chord and its
-// complement (acos of the dot product would lose half the digits), elsewhere by acos, whose
-// rounding its slope (1 / sin, at most 2.3 here) keeps within a few ulps and which costs half
-// as much (this runs per light and cell every frame).
-double Angle(const Vector& a, const Vector& b)
-{
-  const double cosine = Dot(a, b);
-  if (std::abs(cosine) < 0.9)
-  {
-    return std::acos(cosine);
-  }
-  const Vector difference = { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
-  const Vector sum = { { a[0] + b[0], a[1] + b[1], a[2] + b[2] } };
-  return 2.0 * std::atan2(Norm(difference), Norm(sum));
-}
-
 double SquaredDistance(const Vector& a, const Vector& b)
 {
   const Vector difference = { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
@@ -121,7 +105,12 @@ Vector CellCentre(std::size_t index)
 double vtkPhongGouraudBound::LobeBound(double spread, double nearAngle, double farAngle, double n)
 {
   const Exponent exponent(n);
-  return LobeBound(Cap(spread), NearAngle(std::max(nearAngle, 0.0), exponent), farAngle, exponent);
+  if (nearAngle >= HalfPi)
+  {
+    return 0.0; // the lobe is 0 over the whole cap
+  }
+  return LobeBound(Cap(spread), NearAngle(CosSin::Of(std::max(nearAngle, 0.0)), exponent),
+    CosSin::Of(farAngle), exponent);
 }
 
 //------------------------------------------------------------------------------
@@ -165,14 +154,14 @@ vtkPhongGouraudBound::Exponent::Exponent(double n)
   , SinCut(n > 0.0 ? std::sin(Cut) : 0.0)
   , Whole(n >= 1.0 && n <= 65536.0 && n == std::floor(n) ? static_cast<unsigned int>(n) : 0)
 {
-  const auto peak = [n](double q, double& angle)
+  const auto peak = [n](double q, double& cosine)
   {
     const double p = n - q;
-    angle = p > 0.0 ? std::atan(std::sqrt(q / p)) : HalfPi;
+    cosine = p > 0.0 ? std::sqrt(p / (p + q)) : 0.0;
     return p > 0.0 ? std::pow(p / (p + q), 0.5 * p) * std::pow(q / (p + q), 0.5 * q) : 0.0;
   };
-  this->CurvaturePeak = peak(2.0, this->CurvaturePeakAngle);
-  this->SlopePeak = peak(1.0, this->SlopePeakAngle);
+  this->CurvaturePeak = peak(2.0, this->CurvaturePeakCos);
+  this->SlopePeak = peak(1.0, this->SlopePeakCos);
 }
 
 //------------------------------------------------------------------------------
@@ -191,19 +180,27 @@ double vtkPhongGouraudBound::Exponent::Power(double x) const
 }
 
 //------------------------------------------------------------------------------
-vtkPhongGouraudBound::NearAngle::NearAngle(double angle, const Exponent& exponent)
-  : Value(angle)
-  , Cos(std::cos(angle))
-  , Sin(std::sin(angle))
-  , CosN(angle >= HalfPi ? 0.0 : exponent.Power(Cos))
+// The cosine is taken as 0 from pi/2 on: HalfPi, a double below pi/2, has a positive one.
+vtkPhongGouraudBound::CosSin vtkPhongGouraudBound::CosSin::Of(double angle)
+{
+  const double clamped = std::min(angle, Pi);
+  return { clamped >= HalfPi ? std::min(std::cos(clamped), 0.0) : std::cos(clamped),
+    std::max(std::sin(clamped), 0.0) };
+}
+
+//------------------------------------------------------------------------------
+vtkPhongGouraudBound::NearAngle::NearAngle(const CosSin& angle, const Exponent& exponent)
+  : Cos(angle.Cos)
+  , Sin(angle.Sin)
+  , CosN(angle.Cos <= 0.0 ? 0.0 : exponent.Power(angle.Cos))
 {
 }
 
 //------------------------------------------------------------------------------
 double vtkPhongGouraudBound::LobeBound(
-  const Cap& cap, const NearAngle& a, double farAngle, const Exponent& exponent)
+  const Cap& cap, const NearAngle& a, const CosSin& farAngle, const Exponent& exponent)
 {
-  if (a.Value >= HalfPi)
+  if (a.Cos <= 0.0)
   {
     return 0.0; // the lobe is 0 over the whole cap
   }
@@ -229,11 +226,11 @@ double vtkPhongGouraudBound::CapBound(const Cap& cap, const LobeTerms& lobe, dou
 // it is a kink (Kink; LobeBound adds sin(R)/2), otherwise only the largest value bounds
 // (every term infinite). `a` below pi/2.
 vtkPhongGouraudBound::LobeTerms vtkPhongGouraudBound::MakeLobeTerms(
-  const NearAngle& a, double farAngle, const Exponent& exponent)
+  const NearAngle& a, const CosSin& farAngle, const Exponent& exponent)
 {
   const double n = exponent.N;
   LobeTerms lobe;
-  lobe.Kink = n < 2.0 && farAngle >= HalfPi;
+  lobe.Kink = n < 2.0 && farAngle.Cos <= 0.0;
   if (lobe.Kink && n != 1.0)
   {
     lobe.Hs = lobe.G1 = lobe.Hx = Infinite;
@@ -241,49 +238,51 @@ vtkPhongGouraudBound::LobeTerms vtkPhongGouraudBound::MakeLobeTerms(
   }
   // sup over alpha in [a, b] of cos^p sin^q, p = n - q, q in {1, 2}: unimodal on [0, pi/2],
   // its peak where tan^2 = q / p (increasing when p <= 0, the peak then pi/2): at a past the
-  // peak, the peak's value (made once per exponent) around it, at b before it.
-  const double b = std::min(farAngle, HalfPi);
-  const auto sup = [&](int q, double peak, double peakAngle)
+  // peak, the peak's value (made once per exponent) around it, at b before it. Angles in
+  // [0, pi] compare by their cosines, reversed.
+  const double cosB = std::max(farAngle.Cos, 0.0); // b = min(far, pi/2)
+  const double sinB = farAngle.Cos <= 0.0 ? 1.0 : farAngle.Sin;
+  const auto sup = [&](int q, double peak, double peakCos)
   {
     const double p = n - q;
     const auto toQ = [q](double value) { return q == 2 ? value * value : value; };
-    if (p > 0.0 && a.Value >= peakAngle)
+    if (p > 0.0 && a.Cos <= peakCos)
     {
       const double cosQ = toQ(a.Cos); // cos^p = cos^n / cos^q, cos(a) > 0 here
       return (cosQ > 1.0e-100 ? a.CosN / cosQ : std::pow(a.Cos, p)) * toQ(a.Sin);
     }
-    if (p > 0.0 && b > peakAngle)
+    if (p > 0.0 && cosB < peakCos)
     {
       return peak;
     }
-    if (p < 0.0 && b >= HalfPi - 1.0e-12)
+    if (p < 0.0 && cosB <= 1.0e-12)
     {
       return Infinite; // cos^p grows without bound at the lobe's edge
     }
-    return std::pow(std::cos(b), p) * toQ(std::sin(b));
+    return std::pow(cosB, p) * toQ(sinB);
   };
   // d2/dalpha2 cos^n = n(n-1) cos^(n-2) sin^2 - n cos^n; s'(c) c = n cos^n;
   // s'(c) sin = n cos^(n-1) sin; s'(c) = n cos^(n-1), largest at a for n >= 1.
   const double curvature = n * std::abs(n - 1.0); // 0 for the diffuse term's n = 1
   const double bend =
-    curvature > 0.0 ? curvature * sup(2, exponent.CurvaturePeak, exponent.CurvaturePeakAngle) : 0.0;
+    curvature > 0.0 ? curvature * sup(2, exponent.CurvaturePeak, exponent.CurvaturePeakCos) : 0.0;
   lobe.Hs = bend + n * a.CosN;
-  lobe.G1 = n * sup(1, exponent.SlopePeak, exponent.SlopePeakAngle);
+  lobe.G1 = n * sup(1, exponent.SlopePeak, exponent.SlopePeakCos);
   double slope = Infinite; // sup s'(c), for 0 < n < 1 at the far angle
   if (n >= 1.0)
   {
     slope = n * (a.Cos > 1.0e-100 ? a.CosN / a.Cos : std::pow(a.Cos, n - 1.0));
   }
-  else if (b < HalfPi)
+  else if (cosB > 0.0)
   {
-    slope = n * std::pow(std::cos(b), n - 1.0);
+    slope = n * std::pow(cosB, n - 1.0);
   }
   lobe.Hx = bend + std::max(n * a.CosN, slope);
   if (lobe.Kink)
   {
     // n = 1: the unclamped cosine, whose interpolation the kink's bound adds to, curves by
     // |cos| up to the far angle, past pi/2 too.
-    lobe.Hs = std::max(lobe.Hs, -std::cos(std::min(farAngle, Pi)));
+    lobe.Hs = std::max(lobe.Hs, -farAngle.Cos);
   }
   return lobe;
 }
@@ -634,12 +633,15 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, c
 bool vtkPhongGouraudBound::MakeLightViews(
   const Cell& cell, const Scene& scene, const View& view, CellScratch& scratch, bool& positional)
 {
+  // A directional light's view is the same for every cell: made once.
+  const bool first = !scratch.DirectionalMade;
   scratch.Lights.resize(scene.Lights.size());
   scratch.Halfways.resize(scene.Lights.size());
   positional = false;
   for (std::size_t i = 0; i < scene.Lights.size(); ++i)
   {
-    if (!MakeLightView(scene.Lights[i], cell, scratch.Lights[i]))
+    if ((first || scene.Lights[i].Positional) &&
+      !MakeLightView(scene.Lights[i], cell, scratch.Lights[i]))
     {
       return false;
     }
@@ -649,6 +651,7 @@ bool vtkPhongGouraudBound::MakeLightViews(
       scratch.Halfways[i] = MakeHalfway(scene, view, scratch.Lights[i]);
     }
   }
+  scratch.DirectionalMade = true;
   return true;
 }
 
@@ -696,12 +699,13 @@ vtkPhongGouraudBound::LocalView vtkPhongGouraudBound::MakeLocalSpread(double rad
 bool vtkPhongGouraudBound::MakeLightView(
   const Scene::Light& light, const Cell& cell, LightView& lightView)
 {
-  lightView = LightView();
   if (!light.Positional)
   {
+    lightView = LightView();
     lightView.ToLight = light.ToLightMC;
     return true;
   }
+  // Every member is set below (no reset: this runs per light and cell).
   for (int k = 0; k < 3; ++k)
   {
     lightView.ToLight[k] = light.PositionMC[k] - cell.Centre[k];
@@ -747,11 +751,12 @@ double vtkPhongGouraudBound::ReflectionSkew(double spread, const LocalView& ligh
 
 //------------------------------------------------------------------------------
 // The sup of |d/dalpha max(cos(alpha), 0)^n| for alpha from `a` to pi/2: n cos^(n-1) sin,
-// whose one peak is at SlopePeakAngle (n > 1); for n = 1, sin; unbounded for 0 < n < 1.
+// whose one peak is where the cosine is SlopePeakCos (n > 1); for n = 1, sin; unbounded for 0 < n
+// < 1.
 double vtkPhongGouraudBound::SlopeBeyond(const NearAngle& a, const Exponent& exponent)
 {
   const double n = exponent.N;
-  if (!(n > 0.0) || a.Value >= HalfPi)
+  if (!(n > 0.0) || a.Cos <= 0.0)
   {
     return 0.0;
   }
@@ -763,7 +768,7 @@ double vtkPhongGouraudBound::SlopeBeyond(const NearAngle& a, const Exponent& exp
   {
     return 1.0;
   }
-  return a.Value <= exponent.SlopePeakAngle ? n * exponent.SlopePeak : n * a.CosN / a.Cos * a.Sin;
+  return a.Cos >= exponent.SlopePeakCos ? n * exponent.SlopePeak : n * a.CosN / a.Cos * a.Sin;
 }
 
 //------------------------------------------------------------------------------
@@ -826,7 +831,9 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   const Vector& toLight = light.ToLight;
   // The lobe's axis against the cell's normals: Blinn's H against N, or Phong's reflected
   // vector (which turns twice as far as N) against V.
-  double centre, width;
+  // The width: the cell's angles (`base`, `baseAngle`) and the view's and light's (`extra`).
+  double width, baseAngle, extra;
+  CosSin base = { cell.CosWidth, cell.SinWidth };
   // The lobe's axis, and the direction its angle is measured from.
   Vector axis = halfway.Direction, from = d;
   if (scene.Blinn)
@@ -835,7 +842,8 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
     {
       return halfway.LobeZero ? 0.0 : Infinite;
     }
-    width = cell.Cone + cell.Spread + (view.Spread + light.Spread) / halfway.Least;
+    baseAngle = cell.Cone + cell.Spread;
+    extra = (view.Spread + light.Spread) / halfway.Least;
   }
   else
   {
@@ -843,8 +851,12 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
     from = { { 2.0 * c * d[0] - toLight[0], 2.0 * c * d[1] - toLight[1],
       2.0 * c * d[2] - toLight[2] } };
     axis = view.Centre;
-    width = 2.0 * (cell.Cone + cell.Spread) + view.Spread + light.Spread;
+    baseAngle = 2.0 * (cell.Cone + cell.Spread);
+    extra = view.Spread + light.Spread;
+    base = { cell.CosWidth * cell.CosWidth - cell.SinWidth * cell.SinWidth,
+      2.0 * cell.SinWidth * cell.CosWidth };
   }
+  width = baseAngle + extra;
   // Most cells lie beyond the lobe: told by a cosine, before any angle is taken. With
   // Cut <= pi/2, cos(Cut + width) >= cos(Cut) (1 - width^2 / 2) - sin(Cut) width, which needs
   // no cosine per light and cell; a cell it misses is told by the angle below.
@@ -853,15 +865,15 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   {
     return NegligibleLobe;
   }
-  centre = Angle(from, axis);
-  const double nearLobe = std::max(centre - width, 0.0);
+  CosSin nearAngle, farAngle;
+  LobeRange(from, axis, Widen(base, baseAngle, extra), nearAngle, farAngle);
   // Where the lobe is below 1e-7 of the light over the whole cell (most cells, for all but the
   // widest lobes), that bounds it: no power and no lobe bound.
-  if (nearLobe >= exponent.Cut)
+  if (exponent.N > 0.0 && nearAngle.Cos <= exponent.CosCut)
   {
     return NegligibleLobe;
   }
-  const NearAngle a(nearLobe, exponent);
+  const NearAngle a(nearAngle, exponent);
   const double largest = a.CosN;
   // The gate (N.L > 1e-4) or the smooth terminator crossing the cell: only the largest value.
   if (scene.SmoothTerminator || gateCrosses)
@@ -885,13 +897,52 @@ double vtkPhongGouraudBound::SpecularBound(const Cell& cell, const Scene& scene,
   const Cap reflections =
     !scene.Blinn && positional ? Cap(2.0 * cell.Spread + light.Local.Spread) : Cap();
   const Cap& lobeCap = scene.Blinn ? cell.Normals : (positional ? reflections : cell.Reflections);
-  const LobeTerms lobe = MakeLobeTerms(a, centre + width, exponent);
+  const LobeTerms lobe = MakeLobeTerms(a, farAngle, exponent);
   const LocalView& turningLight = scene.Blinn ? light.Local : LocalView();
   const bool spread = localView.Spread > 0.0 || turningLight.Spread > 0.0;
   const double axisSpread = spread && exponent.N != 0.0
     ? ViewSpreadBound(lobe, lobeCap, localView, turningLight, scene.Blinn, halfway.Least)
     : 0.0;
   return std::min(largest, CapBound(lobeCap, lobe, exponent.N) + axisSpread + skew);
+}
+
+//------------------------------------------------------------------------------
+// The cosine and sine of an angle at least `baseAngle` + `extra` (at most pi), from
+// `base`'s: `extra` taken as asin(extra) >= extra, whose cosine is a root, and added by the
+// addition formulas; by std::cos and std::sin only where that could pass pi, or extra > 1/2.
+vtkPhongGouraudBound::CosSin vtkPhongGouraudBound::Widen(
+  const CosSin& base, double baseAngle, double extra)
+{
+  // asin(x) <= 1.05 x for x <= 1/2.
+  if (extra > 0.5 || !(baseAngle + 1.05 * extra < Pi))
+  {
+    return CosSin::Of(baseAngle + extra);
+  }
+  const double cosExtra = std::sqrt(1.0 - extra * extra);
+  return { base.Cos * cosExtra - base.Sin * extra,
+    std::max(base.Sin * cosExtra + base.Cos * extra, 0.0) };
+}
+
+//------------------------------------------------------------------------------
+// The angles between the unit vectors `from` and `axis`, less and plus `width` (each in
+// [0, pi]; width in [0, pi] too), by their cosines and sines: the angle's cosine is the dot
+// product and its sine the cross product's length (accurate at 0, where a root of 1 - cos^2
+// is not), and the difference and the sum follow by the addition formulas.
+void vtkPhongGouraudBound::LobeRange(
+  const Vector& from, const Vector& axis, const CosSin& width, CosSin& nearAngle, CosSin& farAngle)
+{
+  const double c = std::min(std::max(Dot(from, axis), -1.0), 1.0);
+  const Vector cross = { { from[1] * axis[2] - from[2] * axis[1],
+    from[2] * axis[0] - from[0] * axis[2], from[0] * axis[1] - from[1] * axis[0] } };
+  const double s = std::min(Norm(cross), 1.0);
+  nearAngle = c >= width.Cos // the angle within the width
+    ? CosSin()
+    : CosSin{ std::min(c * width.Cos + s * width.Sin, 1.0),
+        std::max(s * width.Cos - c * width.Sin, 0.0) };
+  farAngle = c <= -width.Cos // the angle at least pi - width
+    ? CosSin{ -1.0, 0.0 }
+    : CosSin{ std::max(c * width.Cos - s * width.Sin, -1.0),
+        std::max(s * width.Cos + c * width.Sin, 0.0) };
 }
 
 //------------------------------------------------------------------------------

@@ -209,20 +209,27 @@ private:
     double N;
     double Cut = 0.0; ///< the angle from the lobe's axis past which it is negligible
     double CosCut = -1.0, SinCut = 0.0; ///< of Cut, where it is at most pi/2
-    /// sup of cos^p sin^q at its interior peak (tan^2 = q/p), and that angle, for p = n - 2,
-    /// q = 2 and p = n - 1, q = 1 (0 and pi/2 where p <= 0: no interior peak).
+    /// sup of cos^p sin^q at its interior peak (tan^2 = q/p), and that angle's cosine, for
+    /// p = n - 2, q = 2 and p = n - 1, q = 1 (0 and 0 where p <= 0: no interior peak).
     double CurvaturePeak = 0.0, SlopePeak = 0.0;
-    double CurvaturePeakAngle = 0.0, SlopePeakAngle = 0.0;
+    double CurvaturePeakCos = 0.0, SlopePeakCos = 0.0;
     /// n where it is a whole number up to 2^16, else 0: its powers by squaring (a few
     /// products, within a few ulps) instead of std::pow.
     unsigned int Whole = 0;
     double Power(double x) const; ///< x^n, x in [0, 1]
   };
-  /// The near angle of a lobe bound, in [0, pi/2), with its cosine, sine and cos^n.
+  /// An angle in [0, pi] by its cosine and sine: the lobe bounds compare and combine angles
+  /// by them, so that a light and cell costs no arccosine, sine or cosine.
+  struct CosSin
+  {
+    double Cos = 1.0, Sin = 0.0;
+    static CosSin Of(double angle); ///< of min(angle, pi); cos <= 0 from pi/2 on
+  };
+  /// The near angle of a lobe bound, in [0, pi] (the lobe 0 from pi/2 on), with cos^n.
   struct NearAngle
   {
-    NearAngle(double angle, const Exponent& exponent);
-    double Value, Cos, Sin, CosN;
+    NearAngle(const CosSin& angle, const Exponent& exponent);
+    double Cos, Sin, CosN;
   };
   /// The suprema of a lobe's derivatives over a range of angles that Waldron's identity
   /// takes (LobeBound): Hs and G1 above, and Hx = sup max(|d2 s/d alpha2|, s'(c)), which
@@ -233,7 +240,7 @@ private:
     bool Kink = false; ///< n = 1 and the clamp at c = 0 within the range
   };
   static LobeTerms MakeLobeTerms(
-    const NearAngle& nearAngle, double farAngle, const Exponent& exponent);
+    const NearAngle& nearAngle, const CosSin& farAngle, const Exponent& exponent);
   static double CapBound(const Cap& cap, const LobeTerms& lobe, double n);
   static double ViewSpreadBound(const LobeTerms& lobe, const Cap& normals,
     const LocalView& localView, const LocalView& localLight, bool blinn, double halfwayLeast);
@@ -243,13 +250,17 @@ private:
   {
     std::vector<LightView> Lights;
     std::vector<Halfway> Halfways;
+    bool DirectionalMade = false; ///< the directional lights' views, the same in every cell
   };
   static bool MakeLightViews(
     const Cell& cell, const Scene& scene, const View& view, CellScratch& scratch, bool& positional);
   static Bounds CellBound(const Cell& cell, const Scene& scene, const Exponent& exponent,
     const View& view, const std::vector<Halfway>& halfways, CellScratch& scratch);
   static double LobeBound(
-    const Cap& cap, const NearAngle& nearAngle, double farAngle, const Exponent& exponent);
+    const Cap& cap, const NearAngle& nearAngle, const CosSin& farAngle, const Exponent& exponent);
+  static CosSin Widen(const CosSin& base, double baseAngle, double extra);
+  static void LobeRange(const Vector& from, const Vector& axis, const CosSin& width,
+    CosSin& nearAngle, CosSin& farAngle);
   static double DiffuseBound(const Cap& normals, double cosNear, double cosFar, double sinFar);
   static double DiffuseCurvature(double cosNear, double cosFar);
   static double SlopeBeyond(const NearAngle& a, const Exponent& exponent);
