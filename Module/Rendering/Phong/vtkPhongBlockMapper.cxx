@@ -19,11 +19,13 @@ vtkStandardNewMacro(vtkPhongBlockMapper);
 
 namespace
 {
-// A block mapper made outside a vtkPhong composite mapper lights with the defaults.
-vtkPhongLightingSettings* DefaultSettings()
+// A block mapper made outside a vtkPhong composite mapper (the factory's, for VTK's own
+// composite mapper) lights with a copy of the factory's defaults.
+vtkSmartPointer<vtkPhongLightingSettings> CopyOfFactoryDefaults()
 {
-  static vtkNew<vtkPhongLightingSettings> defaults;
-  return defaults;
+  auto settings = vtkSmartPointer<vtkPhongLightingSettings>::New();
+  settings->DeepCopy(vtkPhongLightingSettings::GetFactoryDefaults());
+  return settings;
 }
 
 // Points a block pointer at another polydata (the block's valid copy) for as long as it
@@ -49,7 +51,7 @@ private:
 
 //------------------------------------------------------------------------------
 vtkPhongBlockMapper::vtkPhongBlockMapper()
-  : Settings(DefaultSettings())
+  : Settings(CopyOfFactoryDefaults())
 {
 }
 
@@ -57,7 +59,8 @@ vtkPhongBlockMapper::vtkPhongBlockMapper()
 void vtkPhongBlockMapper::SetOwner(
   vtkPhongLightingSettings* settings, std::function<vtkPolyData*(vtkPolyData*)> validBlock)
 {
-  this->Settings = settings ? settings : DefaultSettings();
+  this->Settings =
+    settings ? vtkSmartPointer<vtkPhongLightingSettings>(settings) : CopyOfFactoryDefaults();
   this->ValidBlockOf = std::move(validBlock);
 }
 

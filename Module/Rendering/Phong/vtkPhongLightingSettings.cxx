@@ -1,11 +1,19 @@
 #include "vtkPhongLightingSettings.h"
 
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPhongClampedSetter.h"
 
 #include <algorithm>
 
 vtkStandardNewMacro(vtkPhongLightingSettings);
+
+//------------------------------------------------------------------------------
+vtkPhongLightingSettings* vtkPhongLightingSettings::GetFactoryDefaults()
+{
+  static vtkNew<vtkPhongLightingSettings> defaults;
+  return defaults;
+}
 
 //------------------------------------------------------------------------------
 void vtkPhongLightingSettings::SetLightCullingBound(double bound)

@@ -90,6 +90,18 @@ public:
    */
   static const char* GetBudgetModeAsString(int mode);
 
+  /**
+   * The settings that the mappers code which never names vtkPhong gets start from: those
+   * VTK's object factory makes while vtkPhongObjectFactory's switch is on
+   * (`vtkPolyDataMapper()` in a PyVista, vedo or VTK script, the one inside
+   * vtkDataSetMapper), and the block mappers it gives VTK's own composite mapper (VTK 9.3
+   * on). One object for the process, made on first use; each such mapper copies it when it
+   * is made (as PyVista's global theme applies to what is made after it), so set a value here
+   * (an ErrorBudget, a DebugView) before the scene is built. Python:
+   * `vtkphong.overrides.defaults()`. A mapper made by name starts from VTK's defaults.
+   */
+  static vtkPhongLightingSettings* GetFactoryDefaults();
+
   ///@{
   /**
    * The debug view. Default Final; one of the DebugViews (values are clamped).

@@ -19,21 +19,22 @@ vtkStandardNewMacro(vtkPhongObjectFactory);
 
 namespace
 {
-vtkObject* NewPolyDataMapper()
+// The mappers the factory makes start from the process's factory defaults
+// (vtkPhongLightingSettings::GetFactoryDefaults), which code that never names vtkPhong's
+// mappers can still set.
+template <typename Mapper>
+vtkObject* NewFromFactoryDefaults()
 {
-  return vtkPhongPolyDataMapper::New();
-}
-
-vtkObject* NewCompositeMapper()
-{
-  return vtkPhongCompositePolyDataMapper::New();
+  Mapper* mapper = Mapper::New();
+  mapper->GetLightingSettings()->DeepCopy(vtkPhongLightingSettings::GetFactoryDefaults());
+  return mapper;
 }
 
 #if VTKPHONG_VTK_9_3
 // vtkCompositePolyDataMapper::New() never asks the factory, but every composite mapper makes
 // its delegators through it (vtkCompositePolyDataMapperDelegator::New): VTK's own composite
 // mapper, made by name (PyVista's add_composite, ParaView's Surface), then draws its blocks
-// with vtkPhong's block mapper, with the default lighting settings.
+// with vtkPhong's block mapper, starting from the factory defaults (vtkPhongBlockMapper).
 vtkObject* NewDelegator()
 {
   return vtkPhongCompositeDelegator::New();
@@ -49,13 +50,16 @@ struct Override
 };
 
 const Override Overrides[] = {
-  { "vtkPolyDataMapper", "vtkPhongPolyDataMapper", NewPolyDataMapper },
-  { "vtkOpenGLPolyDataMapper", "vtkPhongPolyDataMapper", NewPolyDataMapper },
+  { "vtkPolyDataMapper", "vtkPhongPolyDataMapper", NewFromFactoryDefaults<vtkPhongPolyDataMapper> },
+  { "vtkOpenGLPolyDataMapper", "vtkPhongPolyDataMapper",
+    NewFromFactoryDefaults<vtkPhongPolyDataMapper> },
 #if VTKPHONG_VTK_9_3
-  { "vtkCompositePolyDataMapper", "vtkPhongCompositePolyDataMapper", NewCompositeMapper },
+  { "vtkCompositePolyDataMapper", "vtkPhongCompositePolyDataMapper",
+    NewFromFactoryDefaults<vtkPhongCompositePolyDataMapper> },
   { "vtkCompositePolyDataMapperDelegator", "vtkPhongCompositeDelegator", NewDelegator },
 #else
-  { "vtkCompositePolyDataMapper2", "vtkPhongCompositePolyDataMapper", NewCompositeMapper },
+  { "vtkCompositePolyDataMapper2", "vtkPhongCompositePolyDataMapper",
+    NewFromFactoryDefaults<vtkPhongCompositePolyDataMapper> },
 #endif
 };
 

@@ -18,7 +18,7 @@
  * `vtkCompositePolyDataMapper::New()` does not ask the factory, but every composite mapper
  * makes its delegators through `vtkCompositePolyDataMapperDelegator::New()`, which does; its
  * override gives VTK's own composite mapper (PyVista's `add_composite`, ParaView's Surface
- * representation) vtkPhong's block mappers, with the default lighting settings. On VTK 9.1,
+ * representation) vtkPhong's block mappers. On VTK 9.1,
  * `vtkCompositePolyDataMapper2::New()` and its helpers' New() never ask the factory: a
  * composite mapper made by its class name (`vtkCompositePolyDataMapper2()` in Python) stays
  * VTK's there (docs/compatibility.md); vtkPhongCompositePolyDataMapper, or "Phong Surface"
@@ -31,6 +31,12 @@
  * factory and enables the others' overrides of those classes again.
  *
  * Only objects made after the switch are affected; existing mappers keep their class.
+ *
+ * Settings: every mapper the factory makes, and every block mapper it gives VTK's composite
+ * mapper, starts from vtkPhongLightingSettings::GetFactoryDefaults(), one object for the
+ * process. A script that never names vtkPhong's mappers sets the lighting there before it
+ * builds its scene: `vtkphong.overrides.defaults().SetErrorBudget(1.0)` in Python, and
+ * PyVista's or vedo's scenes then spend that budget.
  *
  * @sa vtkPhongPolyDataMapper vtkPhongCompositePolyDataMapper
  */

@@ -11,10 +11,14 @@ its helpers' never ask the factory; code that asks the factory for it by name
 gets vtkPhong's. Objects made before the import keep their class.
 
 ``enable()`` and ``disable()`` switch the overrides at run time;
-``enabled()`` tells whether they are on. See vtkPhongObjectFactory.
+``enabled()`` tells whether they are on. ``defaults()`` is the lighting
+settings object every mapper made through the switch starts from: set an
+error budget, a debug view or any other setting there before building the
+scene, e.g. ``vtkphong.overrides.defaults().SetErrorBudget(1.0)`` before
+PyVista's ``add_mesh``. See vtkPhongObjectFactory.
 """
 
-from .vtkRenderingPhong import vtkPhongObjectFactory
+from .vtkRenderingPhong import vtkPhongLightingSettings, vtkPhongObjectFactory
 
 
 def enable():
@@ -30,6 +34,11 @@ def disable():
 def enabled():
     """Whether the overrides are on."""
     return vtkPhongObjectFactory.GetOverridesEnabled()
+
+
+def defaults():
+    """The vtkPhongLightingSettings that mappers made through the switch copy when made."""
+    return vtkPhongLightingSettings.GetFactoryDefaults()
 
 
 enable()

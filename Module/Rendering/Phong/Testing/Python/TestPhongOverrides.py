@@ -191,4 +191,85 @@ checks.expect(vtkPolyDataMapper().GetClassName() == "vtkPhongPolyDataMapper",
               "and on again")
 checks.expect(vtkPolyData() is not None, "other classes are untouched")
 
+
+def budget_scene(kind):
+    """A 48 x 48 sphere under the light kit, drawn the way a client draws it: `kind` is
+    "polydata" (vedo, VTK's examples), "dataset" (PyVista: vtkDataSetMapper, whose polydata
+    mapper the factory makes at the first render) or "composite" (PyVista's add_composite).
+    Returns the mapper that lights (the dataset mapper's inner one) and the picture."""
+    from vtkmodules.vtkRenderingCore import vtkDataSetMapper
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(48)
+    sphere.SetPhiResolution(48)
+    if kind == "composite":
+        from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+        import vtkmodules.vtkRenderingOpenGL2 as opengl2
+        import vtkmodules.vtkRenderingCore as core
+        sphere.Update()
+        blocks = vtkMultiBlockDataSet()
+        blocks.SetBlock(0, sphere.GetOutput())
+        mapper = (getattr(core, COMPOSITE, None) or getattr(opengl2, COMPOSITE))()
+        mapper.SetInputDataObject(blocks)
+    else:
+        mapper = vtkDataSetMapper() if kind == "dataset" else vtkPolyDataMapper()
+        mapper.SetInputConnection(sphere.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetInterpolationToPhong()
+    actor.GetProperty().SetSpecular(0.4)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    vtkLightKit().AddLightsToRenderer(renderer)
+    picture = picture_of(renderer, 200, 200)
+    return (mapper.GetPolyDataMapper() if kind == "dataset" else mapper), picture
+
+
+def budget_hue(picture):
+    """The BudgetUse view's hue over the drawn pixels: "vertex" (orange), "fragment" (blue)."""
+    red, blue = picture[:, 0], picture[:, 2]
+    orange, bluish = int((red > blue + 20).sum()), int((blue > red + 20).sum())
+    return "vertex" if orange > 10 * max(bluish, 1) else "fragment" if bluish > 10 * max(
+        orange, 1) else "mixed (%d orange, %d blue)" % (orange, bluish)
+
+
+# Settings for code that never names vtkPhong's mappers: the factory defaults, copied into
+# every mapper made through the switch after they are set, PyVista's and vedo's included. An
+# error budget of 100 levels puts this coarse sphere's light sums per vertex (its bound under
+# the light kit is about 53 levels); the BudgetUse view shows the mode as a hue (orange per
+# vertex, blue per fragment).
+made_before = vtkPolyDataMapper()
+defaults = vtkphong.overrides.defaults()
+checks.expect(defaults.GetClassName() == "vtkPhongLightingSettings" and
+              defaults.GetErrorBudget() == 0.0, "the factory defaults start as VTK's defaults")
+defaults.SetErrorBudget(100.0)
+defaults.SetDebugView(defaults.BudgetUse)
+kinds = ["polydata", "dataset"] + (["composite"] if VTK_9_3 else [])
+for kind in kinds:
+    mapper, picture = budget_scene(kind)
+    checks.expect(mapper.GetClassName() == "vtkPhongPolyDataMapper" or kind == "composite",
+                  "%s: the mapper that lights is vtkPhong's (%s)" % (kind, mapper.GetClassName()))
+    hue = budget_hue(picture)
+    checks.expect(hue == "vertex", "%s: the defaults' error budget reached the mapper, its sums "
+                  "per vertex (BudgetUse: %s)" % (kind, hue))
+try:  # PyVista itself where it is installed (Debian 13 on): its own Plotter and add_mesh
+    import pyvista
+except ImportError:
+    pyvista = None
+if pyvista is not None:
+    plotter = pyvista.Plotter(off_screen=True, window_size=(200, 200))
+    plotter.add_mesh(pyvista.Sphere(theta_resolution=48, phi_resolution=48),
+                     smooth_shading=True, specular=0.4)
+    shot = plotter.screenshot(return_img=True).reshape(-1, 3).astype(int)
+    plotter.close()
+    hue = budget_hue(shot)
+    checks.expect(hue == "vertex", "PyVista's add_mesh: the defaults' error budget reached "
+                  "its mapper (BudgetUse: %s)" % hue)
+checks.expect(made_before.GetErrorBudget() == 0.0,
+              "a mapper made before the defaults changed keeps its settings")
+defaults.SetErrorBudget(0.0)
+defaults.SetDebugView(defaults.Final)
+_, exact = budget_scene("polydata")
+checks.expect(int(abs(exact[:, 0] - exact[:, 2]).max()) < 60 and int(exact.max()) > 100,
+              "defaults set back: the exact mode's shaded picture, not the BudgetUse view")
+
 checks.exit()
