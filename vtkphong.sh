@@ -266,6 +266,14 @@ test_release() { # test_release CODENAME [COMMAND]
     VTKPHONG_OWN_MOUNT_NAMESPACE=1 exec unshare --mount --propagation private \
       "$root/vtkphong.sh" "test-$suffix" "$inner"
   fi
+  # One stage at a time per root (waiting, not failing): two at once, CI beside a
+  # developer's run, would race to make it and contend for its package database. The lock
+  # goes with this process, however it ends; what runs in the root does not inherit it (a
+  # server left running there would hold it for ever).
+  mkdir -p "$(dirname "$root_dir")"
+  local lock
+  exec {lock}>"$root_dir.lock"
+  flock "$lock"
   release_create_root "$codename" "$root_dir"
   release_clear_stale_mounts "$root_dir"
   cp /etc/resolv.conf "$root_dir/etc/resolv.conf"
@@ -284,7 +292,7 @@ test_release() { # test_release CODENAME [COMMAND]
     release_mount "$root_dir" "${CCACHE_DIR:-$HOME/.ccache}" /root/.ccache --bind
     chroot "$root_dir" sh -c 'command -v ccache >/dev/null' ||
       chroot "$root_dir" env DEBIAN_FRONTEND=noninteractive \
-        sh -c 'apt-get update && apt-get install -y --no-install-recommends ccache'
+        sh -c 'apt-get update && apt-get install -y --no-install-recommends ccache' {lock}>&-
     launcher=(CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache)
   fi
   local status=0
@@ -292,7 +300,7 @@ test_release() { # test_release CODENAME [COMMAND]
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin "${launcher[@]}" \
     VTKPHONG_BUILD_DIR="$root/build-$suffix" \
     VTKPHONG_PARAVIEW_BUILD_DIR="$root/build-paraview-$suffix" \
-    "$root/vtkphong.sh" "$inner" || status=$?
+    "$root/vtkphong.sh" "$inner" {lock}>&- || status=$?
   release_unmount
   trap - EXIT INT TERM HUP
   return "$status"
