@@ -743,9 +743,11 @@ bool vtkPhongGouraudBound::MakeLightView(
 // between the directions by asin(e) while e < 1.
 double vtkPhongGouraudBound::ReflectionSkew(double spread, const LocalView& light)
 {
+  // sin(sigma) and cos(sigma) are the light's cap's own (its Spread is a tangent).
   const double half = std::sin(0.5 * spread);
-  const double e = 16.0 * half * half + 8.0 * std::sin(light.Spread) * half +
-    (1.0 - std::cos(light.Spread)) + light.Skew;
+  const double sinLight = 2.0 * light.Directions.Kink;
+  const double e =
+    16.0 * half * half + 8.0 * sinLight * half + (1.0 - light.Directions.Cosine) + light.Skew;
   return e < 1.0 ? std::asin(e) : Infinite;
 }
 
