@@ -211,8 +211,9 @@ release_unmount() {
 
 release_clear_stale_mounts() { # release_clear_stale_mounts ROOT
   # A run killed outright (SIGKILL: no EXIT trap) leaves its mounts in the root, and mounting
-  # over them fails ("sysfs already mounted": CI, 2026-11-28). This runs in the stage's own
-  # mount namespace, so unmounting them here never touches another run using the same root.
+  # over them fails ("sysfs already mounted": CI, 2026-11-28). This runs under the root's lock
+  # (no other stage is using them) and, where unshare works, in the stage's own mount
+  # namespace (the host's are left alone).
   local target
   awk -v prefix="$1/" 'index($5, prefix) == 1 { print $5 }' /proc/self/mountinfo | sort -r |
     while read -r target; do
@@ -260,7 +261,8 @@ test_release() { # test_release CODENAME [COMMAND]
   local root_dir suffix
   root_dir="$(release_root "$codename")"
   suffix="$(release_build_suffix "$codename")"
-  if [ -z "${VTKPHONG_OWN_MOUNT_NAMESPACE:-}" ] && command -v unshare >/dev/null 2>&1; then
+  if [ -z "${VTKPHONG_OWN_MOUNT_NAMESPACE:-}" ] &&
+    unshare --mount --propagation private true 2>/dev/null; then
     # In a mount namespace of its own, the stage's mounts vanish with it however it ends, and
     # two stages sharing a root (CI beside a developer's run) never see each other's.
     VTKPHONG_OWN_MOUNT_NAMESPACE=1 exec unshare --mount --propagation private \
