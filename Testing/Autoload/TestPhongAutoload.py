@@ -30,10 +30,13 @@ PHONG_CLASS = {"vtkPolyDataMapper": "vtkPhongPolyDataMapper",
                "vtkCompositePolyDataMapperDelegator": "vtkPhongCompositeDelegator"}
 
 
-def environment(autoload):
-    env = {k: v for k, v in os.environ.items() if k != "VTK_AUTOLOAD_PATH"}
+def environment(autoload, budget=None):
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("VTK_AUTOLOAD_PATH", "VTKPHONG_ERROR_BUDGET")}
     if autoload:
         env["VTK_AUTOLOAD_PATH"] = args.autoload
+    if budget is not None:
+        env["VTKPHONG_ERROR_BUDGET"] = budget
     return env
 
 
@@ -47,11 +50,12 @@ def made_classes(output):
     return made
 
 
-def run_program(autoload):
-    out = os.path.join(args.temporary, "TestPhongAutoload_%s.png"
-                       % ("autoload" if autoload else "stock"))
+def run_program(autoload, budget=None):
+    out = os.path.join(args.temporary, "TestPhongAutoload_%s%s.png"
+                       % ("autoload" if autoload else "stock",
+                          "_budget" if budget is not None else ""))
     result = subprocess.run([args.program, out], capture_output=True, text=True, timeout=300,
-                            env=environment(autoload))
+                            env=environment(autoload, budget))
     checks.expect(result.returncode == 0, "the program %s VTK_AUTOLOAD_PATH exits 0 (%d, %r)"
                   % ("with" if autoload else "without", result.returncode, result.stderr[-500:]))
     return made_classes(result.stdout), out
@@ -72,6 +76,16 @@ if os.path.exists(stock_png) and os.path.exists(phong_png):
     # exact model differs (VTK's specular on the composite's back-facing normals, ...).
     differing = int((abs(a - b).max(axis=2) > 6).sum())
     print("stock and autoloaded pictures: %d pixels differ by more than 6 levels" % differing)
+
+# An error budget with no change to the program: VTKPHONG_ERROR_BUDGET. At 255 levels its
+# coarse spheres go per vertex (their bound is about 134 levels), so the picture moves off
+# the exact one; measured 149 pixels by more than 2 levels, at most 29.
+_, budget_png = run_program(True, "255")
+if os.path.exists(phong_png) and os.path.exists(budget_png):
+    exact, budgeted = read_png(phong_png).astype(int), read_png(budget_png).astype(int)
+    moved = int((abs(exact - budgeted).max(axis=2) > 2).sum())
+    checks.expect(moved > 20, "VTKPHONG_ERROR_BUDGET=255 reaches the autoloaded mappers: %d "
+                  "pixels moved by more than 2 levels off the exact picture" % moved)
 
 # VTK's own Python, vtkphong not imported.
 script = ("from vtkmodules.vtkRenderingCore import vtkPolyDataMapper\n"

@@ -5,13 +5,41 @@
 #include "vtkPhongClampedSetter.h"
 
 #include <algorithm>
+#include <cstdlib> // for std::getenv, std::strtod
 
 vtkStandardNewMacro(vtkPhongLightingSettings);
+
+namespace
+{
+// VTKPHONG_ERROR_BUDGET, in levels: the budget of a program that cannot call
+// GetFactoryDefaults, run with VTK_AUTOLOAD_PATH and no change to its code (pvbatch too).
+// Anything but a number in [0, 255] is reported and left out.
+bool ApplyEnvironment(vtkPhongLightingSettings* settings)
+{
+  const char* text = std::getenv("VTKPHONG_ERROR_BUDGET");
+  if (!text || !*text)
+  {
+    return false;
+  }
+  char* end = nullptr;
+  const double levels = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(levels >= 0.0 && levels <= 255.0))
+  {
+    vtkErrorWithObjectMacro(settings,
+      "VTKPHONG_ERROR_BUDGET=\"" << text << "\" is not a number of levels in [0, 255]: ignored");
+    return false;
+  }
+  settings->SetErrorBudget(levels);
+  return true;
+}
+}
 
 //------------------------------------------------------------------------------
 vtkPhongLightingSettings* vtkPhongLightingSettings::GetFactoryDefaults()
 {
   static vtkNew<vtkPhongLightingSettings> defaults;
+  static const bool fromEnvironment = ApplyEnvironment(defaults);
+  (void)fromEnvironment;
   return defaults;
 }
 

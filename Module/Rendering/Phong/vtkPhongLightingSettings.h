@@ -98,7 +98,11 @@ public:
    * on). One object for the process, made on first use; each such mapper copies it when it
    * is made (as PyVista's global theme applies to what is made after it), so set a value here
    * (an ErrorBudget, a DebugView) before the scene is built. Python:
-   * `vtkphong.overrides.defaults()`. A mapper made by name starts from VTK's defaults.
+   * `vtkphong.overrides.defaults()`. A mapper made by name starts from its class's defaults.
+   * A program that cannot call this (one run with VTK_AUTOLOAD_PATH and no change to its
+   * code, pvbatch) states its budget in the environment: VTKPHONG_ERROR_BUDGET, in levels,
+   * is read when the defaults are made; anything but a number in [0, 255] is reported with
+   * an error and left out.
    */
   static vtkPhongLightingSettings* GetFactoryDefaults();
 

@@ -272,4 +272,24 @@ _, exact = budget_scene("polydata")
 checks.expect(int(abs(exact[:, 0] - exact[:, 2]).max()) < 60 and int(exact.max()) > 100,
               "defaults set back: the exact mode's shaded picture, not the BudgetUse view")
 
+# The same budget from the environment, for a program that cannot call defaults() (one run
+# with VTK_AUTOLOAD_PATH, pvbatch): VTKPHONG_ERROR_BUDGET, read when the defaults are made;
+# anything but a number of levels in [0, 255] is reported and left out.
+import os  # noqa: E402
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+READ_BUDGET = ("import vtkphong.overrides as overrides\n"
+               "print('budget', overrides.defaults().GetErrorBudget())\n")
+for value, expected in (("1.5", 1.5), (" 2", 2.0), ("255", 255.0), ("", 0.0), ("abc", None),
+                        ("-1", None), ("nan", None), ("300", None), ("1.5x", None)):
+    run = subprocess.run([sys.executable, "-c", READ_BUDGET], capture_output=True, text=True,
+                         timeout=120, env=dict(os.environ, VTKPHONG_ERROR_BUDGET=value))
+    budget = [line.split()[1] for line in run.stdout.splitlines() if line.startswith("budget")]
+    reported = "VTKPHONG_ERROR_BUDGET" in run.stderr
+    checks.expect(run.returncode == 0 and budget == [repr(expected if expected is not None
+                                                          else 0.0)] and
+                  reported == (expected is None),
+                  "VTKPHONG_ERROR_BUDGET=%r: budget %s, reported %s (%r)"
+                  % (value, budget, reported, run.stderr[-300:]))
+
 checks.exit()
