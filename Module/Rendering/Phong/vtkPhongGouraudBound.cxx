@@ -753,8 +753,8 @@ double vtkPhongGouraudBound::ReflectionSkew(double spread, const LocalView& ligh
 
 //------------------------------------------------------------------------------
 // The sup of |d/dalpha max(cos(alpha), 0)^n| for alpha from `a` to pi/2: n cos^(n-1) sin,
-// whose one peak is where the cosine is SlopePeakCos (n > 1); for n = 1, sin; unbounded for 0 < n
-// < 1.
+// whose one peak is where the cosine is SlopePeakCos (n > 1); for n = 1, sin; unbounded for
+// 0 < n < 1.
 double vtkPhongGouraudBound::SlopeBeyond(const NearAngle& a, const Exponent& exponent)
 {
   const double n = exponent.N;

@@ -2,7 +2,12 @@
 (a PyVista-style scene: a vtkPolyDataMapper it builds itself, SetInterpolationToPhong,
 vtkLightKit) draws with vtkPhong's mapper; code asking the factory for VTK's OpenGL or
 composite mapper by name gets vtkPhong's; the switch turns off and on at run time, and
-objects made before it keep their class."""
+objects made before it keep their class. Mappers made through it start from the factory
+defaults (vtkphong.overrides.defaults(), VTKPHONG_ERROR_BUDGET)."""
+
+import os
+import subprocess
+import sys
 
 from vtkmodules.vtkCommonCore import vtkObjectFactory, vtkVersion
 from vtkmodules.vtkCommonDataModel import vtkPolyData
@@ -44,13 +49,18 @@ def picture_of(renderer, width, height):
     return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
 
 
+def composite_mapper_class():
+    """VTK's own composite mapper class (vtkRenderingCore's from 9.3, OpenGL2's before)."""
+    import vtkmodules.vtkRenderingOpenGL2 as opengl2
+    import vtkmodules.vtkRenderingCore as core
+    return getattr(core, COMPOSITE, None) or getattr(opengl2, COMPOSITE)
+
+
 def composite_by_name():
     """PyVista's add_composite: VTK's own composite mapper made by its class name, two blocks,
     a renderer ambient light stock VTK ignores and vtkPhong adds (docs/compatibility.md)."""
-    import vtkmodules.vtkRenderingOpenGL2 as opengl2
     from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
-    import vtkmodules.vtkRenderingCore as core
-    mapper_class = getattr(core, COMPOSITE, None) or getattr(opengl2, COMPOSITE)
+    mapper_class = composite_mapper_class()
     blocks = vtkMultiBlockDataSet()
     for index, centre in enumerate(((-0.6, 0, 0), (0.6, 0, 0))):
         sphere = vtkSphereSource()
@@ -203,12 +213,10 @@ def budget_scene(kind):
     sphere.SetPhiResolution(48)
     if kind == "composite":
         from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
-        import vtkmodules.vtkRenderingOpenGL2 as opengl2
-        import vtkmodules.vtkRenderingCore as core
         sphere.Update()
         blocks = vtkMultiBlockDataSet()
         blocks.SetBlock(0, sphere.GetOutput())
-        mapper = (getattr(core, COMPOSITE, None) or getattr(opengl2, COMPOSITE))()
+        mapper = composite_mapper_class()()
         mapper.SetInputDataObject(blocks)
     else:
         mapper = vtkDataSetMapper() if kind == "dataset" else vtkPolyDataMapper()
@@ -275,9 +283,6 @@ checks.expect(int(abs(exact[:, 0] - exact[:, 2]).max()) < 60 and int(exact.max()
 # The same budget from the environment, for a program that cannot call defaults() (one run
 # with VTK_AUTOLOAD_PATH, pvbatch): VTKPHONG_ERROR_BUDGET, read when the defaults are made;
 # anything but a number of levels in [0, 255] is reported and left out.
-import os  # noqa: E402
-import subprocess  # noqa: E402
-import sys  # noqa: E402
 READ_BUDGET = ("import vtkphong.overrides as overrides\n"
                "print('budget', overrides.defaults().GetErrorBudget())\n")
 for value, expected in (("1.5", 1.5), (" 2", 2.0), ("255", 255.0), ("", 0.0), ("abc", None),
