@@ -1095,18 +1095,25 @@ void PlannerCost(
               "still; limited at 1 level but \"whole\"; point lights at twice the mesh's size)\n");
 }
 
-// The mode a vtkPhong mapper's last plan chose under its error budget, in a word.
-const char* BudgetMode(vtkPhongPolyDataMapper* mapper)
+// The mode a vtkPhong mapper's last plan chose under its error budget, in a word, and "+c"
+// where its fragment shader took the lights as constants.
+std::string BudgetMode(vtkPhongPolyDataMapper* mapper)
 {
+  const bool constants =
+    std::string(mapper->GetLastShaderSignature()).find("LIGHT_CONSTANTS") != std::string::npos;
+  const char* mode = "fragment";
   switch (mapper->GetBudgetMode())
   {
     case vtkPhongPolyDataMapper::BudgetPerVertex:
-      return "vertex";
+      mode = "vertex";
+      break;
     case vtkPhongPolyDataMapper::BudgetSpecularPerVertex:
-      return "specular";
+      mode = "specular";
+      break;
     default:
-      return "fragment";
+      break;
   }
+  return std::string(mode) + (constants ? "+c" : "");
 }
 
 // What the error budget buys (vtkPhongPolyDataMapper::SetErrorBudget): stock, exact vtkPhong
@@ -1114,7 +1121,7 @@ const char* BudgetMode(vtkPhongPolyDataMapper* mapper)
 // the kinds section's light sets of 1 and 8 lights; the materials of that section, Blinn-Phong
 // for vtkPhong. Each budget's column: ms, the mode it chose (fragment: every sum per fragment,
 // the lobe by squaring where that fits; specular: the specular sums per vertex; vertex:
-// every sum) and its bound in levels.
+// every sum; +c: the lights as constants) and its bound in levels.
 void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
 {
   const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
@@ -1123,7 +1130,7 @@ void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
   std::printf("%-22s %-15s %8s %8s", "mesh", "lights", "stock", "exact");
   for (double budget : budgets)
   {
-    std::printf(" %22s", ("budget " + std::to_string(budget).substr(0, 3)).c_str());
+    std::printf(" %24s", ("budget " + std::to_string(budget).substr(0, 3)).c_str());
   }
   std::printf(" %8s %8s %8s %8s\n", "1/stock", "1/exact", "0.5/exa", "3/stock");
   const auto meshes = SphereAndMeshes(meshFiles, quick);
@@ -1164,7 +1171,7 @@ void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
         set.c_str(), 1e3 * t[0], 1e3 * t[1]);
       for (std::size_t b = 0; b < budgeted.size(); ++b)
       {
-        std::printf(" %8.2f %-8s %4.2f", 1e3 * t[2 + b], BudgetMode(budgeted[b]),
+        std::printf(" %8.2f %-10s %4.2f", 1e3 * t[2 + b], BudgetMode(budgeted[b]).c_str(),
           std::min(budgeted[b]->GetErrorBound(), 9.99));
       }
       PrintRatio(t[3], t[0]);
@@ -1177,7 +1184,8 @@ void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
   }
   std::printf("(each budget: ms, mode, bound in levels; fragment = every sum per fragment, "
               "the lobe by squaring where its rounding fits, specular = the specular sums per "
-              "vertex and the diffuse per fragment, vertex = every sum per vertex; ratios: "
+              "vertex and the diffuse per fragment, vertex = every sum per vertex, +c = the "
+              "lights as constants in the fragment shader; ratios: "
               "budget 1 to stock and to exact, 0.5 to exact, 3 to stock)\n");
   PlannerCost(meshes, quick);
 }

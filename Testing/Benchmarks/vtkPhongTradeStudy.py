@@ -272,8 +272,11 @@ def read_csv(path, integers, reals):
 
 
 def budget_mode(mapper):
-    """The mode the mapper's last plan chose under its budget, and whether it squared the lobe."""
-    return mapper.GetBudgetModeAsString() + (", squared" if mapper.GetSquaredShininess() else "")
+    """The mode the mapper's last plan chose under its budget, whether it squared the lobe and
+    whether its fragment shader took the lights as constants."""
+    constants = "LIGHT_CONSTANTS" in mapper.GetLastShaderSignature()
+    return (mapper.GetBudgetModeAsString() + (", squared" if mapper.GetSquaredShininess() else "")
+            + (", constants" if constants else ""))
 
 
 def run_budgets(study, quick, out):
@@ -346,7 +349,9 @@ def budget_report(rows):
              "against the exact surface, as above, so they hold the mesh's own error too: a",
              "budget of B adds at most B to the exact mode's largest error. Mode: where the",
              "light sums went (per fragment, the specular sums per vertex, every sum per",
-             "vertex; \"squared\": the whole shininess raised by squaring); bound: what the",
+             "vertex; \"squared\": the whole shininess raised by squaring; \"constants\": the",
+             "lights' values written into the fragment shader, from the second frame of a still",
+             "scene); bound: what the",
              "mapper spent of the budget (levels). The eight lights include point and spot",
              "lights, which no per-vertex bound covers yet. This section alone:",
              "`PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3",

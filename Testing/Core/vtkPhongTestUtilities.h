@@ -396,12 +396,15 @@ private:
 };
 
 // The rendered image, for pixel checks.
-inline vtkSmartPointer<vtkImageData> Snapshot(vtkRenderWindow* window)
+// The window's picture; `rerender` false reads the last frame instead of rendering another
+// (which counts as a frame for what a mapper decides from frame to frame).
+inline vtkSmartPointer<vtkImageData> Snapshot(vtkRenderWindow* window, bool rerender = true)
 {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
+  grab->SetShouldRerender(rerender);
   grab->Update();
   return grab->GetOutput();
 }

@@ -23,6 +23,8 @@ public:
    * The light's position and unit direction (from the light towards its focal point) in the
    * view coordinates of `ren`'s active camera. HasDirection is false when the focal point is
    * at the position (or not finite): DirectionVC is then the view direction (0, 0, -1).
+   * Headlights and camera lights are placed from their own coordinates, the same bits for
+   * every turn of the camera (vtkPhongMapperCore's light constants rely on it).
    */
   static vtkPhongLightGeometry InView(vtkLight* light, vtkRenderer* ren);
 
@@ -48,6 +50,12 @@ public:
   double PositionVC[3] = { 0.0, 0.0, 0.0 };
   double DirectionVC[3] = { 0.0, 0.0, -1.0 };
   bool HasDirection = true;
+
+private:
+  static bool InCameraFrame(
+    vtkLight* light, vtkRenderer* ren, double positionVC[4], double directionVC[3]);
+  static void InWorld(
+    vtkLight* light, vtkRenderer* ren, double positionVC[4], double directionVC[3]);
 };
 
 #endif

@@ -35,14 +35,28 @@ void AppendRGB(std::vector<float>& packed, const T& rgb)
     { static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]) });
 }
 
-void SetVec3Array(
-  vtkShaderProgram* program, const std::string& name, const std::vector<float>& values)
+void UploadArray(vtkShaderProgram* program, const vtkPhongLightArray& array)
 {
-  if (!values.empty())
+  const int count = static_cast<int>(array.Values.size()) / array.Components;
+  if (count == 0)
   {
-    program->SetUniform3fv(name.c_str(), static_cast<int>(values.size() / 3),
-      reinterpret_cast<const float(*)[3]>(values.data()));
+    return;
   }
+  if (array.Components == 3)
+  {
+    program->SetUniform3fv(
+      array.Name.c_str(), count, reinterpret_cast<const float(*)[3]>(array.Values.data()));
+  }
+  else
+  {
+    program->SetUniform1fv(array.Name.c_str(), count, array.Values.data());
+  }
+}
+
+void AddVec3Array(
+  const std::string& name, std::vector<float> values, std::vector<vtkPhongLightArray>& out)
+{
+  out.push_back({ name, 3, std::move(values) });
 }
 }
 
@@ -64,18 +78,31 @@ vtkPhongLightUniforms::vtkPhongLightUniforms(
 //------------------------------------------------------------------------------
 void vtkPhongLightUniforms::Upload()
 {
-  this->ReadSceneAmbient();
-  this->UploadDirectional();
+  for (const vtkPhongLightArray& array : this->Arrays())
+  {
+    UploadArray(this->Program, array);
+  }
   this->UploadAmbient();
+  this->UploadEmission();
+}
+
+//------------------------------------------------------------------------------
+// Also sums the ambient light (the renderer's and the directional lights') for UploadAmbient.
+vtkPhongLightUniforms::LightArrays vtkPhongLightUniforms::Arrays()
+{
+  LightArrays arrays;
+  std::fill(std::begin(this->AmbientLight), std::end(this->AmbientLight), 0.0);
+  this->ReadSceneAmbient();
+  this->AddDirectional(arrays);
   if (this->ThePlan.Has(Feature::Point))
   {
-    this->UploadPositional(this->ThePlan.PointLights, "phongPointLight", false);
+    this->AddPositional(this->ThePlan.PointLights, "phongPointLight", false, arrays);
   }
   if (this->ThePlan.Has(Feature::Spot))
   {
-    this->UploadPositional(this->ThePlan.SpotLights, "phongSpotLight", true);
+    this->AddPositional(this->ThePlan.SpotLights, "phongSpotLight", true, arrays);
   }
-  this->UploadEmission();
+  return arrays;
 }
 
 //------------------------------------------------------------------------------
@@ -160,7 +187,7 @@ void vtkPhongLightUniforms::ReadSceneAmbient()
 //------------------------------------------------------------------------------
 // Directional lights: the direction towards the light, the colours, and their ambient
 // colours added to the ambient light, which is the same everywhere.
-void vtkPhongLightUniforms::UploadDirectional()
+void vtkPhongLightUniforms::AddDirectional(LightArrays& out)
 {
   std::vector<float> toLight, diffuse, specular;
   for (vtkLight* light : this->ThePlan.DirectionalLights)
@@ -189,8 +216,8 @@ void vtkPhongLightUniforms::UploadDirectional()
   }
   if (this->ThePlan.Has(Feature::Directional))
   {
-    SetVec3Array(this->Program, "phongDirectionalLightToLightVC", toLight);
-    this->UploadColors("phongDirectionalLight", diffuse, specular);
+    AddVec3Array("phongDirectionalLightToLightVC", std::move(toLight), out);
+    this->AddColors("phongDirectionalLight", diffuse, specular, out);
   }
 }
 
@@ -198,16 +225,16 @@ void vtkPhongLightUniforms::UploadDirectional()
 // The diffuse and specular colours of one light kind. Without SEPARATE_SPECULAR_COLORS every
 // light's specular colour, as uploaded, is its diffuse colour (vtkPhongShaderPlanner compares
 // the same floats), the specular sums read the diffuse array, and no specular array exists.
-void vtkPhongLightUniforms::UploadColors(
-  const std::string& prefix, const std::vector<float>& diffuse, const std::vector<float>& specular)
+void vtkPhongLightUniforms::AddColors(const std::string& prefix, const std::vector<float>& diffuse,
+  const std::vector<float>& specular, LightArrays& out) const
 {
   if (this->ThePlan.Has(Feature::Diffuse))
   {
-    SetVec3Array(this->Program, prefix + "Diffuse", diffuse);
+    AddVec3Array(prefix + "Diffuse", diffuse, out);
   }
   if (this->ThePlan.Has(Feature::SeparateSpecularColors))
   {
-    SetVec3Array(this->Program, prefix + "Specular", specular);
+    AddVec3Array(prefix + "Specular", specular, out);
   }
 }
 
@@ -296,8 +323,8 @@ void vtkPhongLightUniforms::AddSpot(
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongLightUniforms::UploadPositional(
-  const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot)
+void vtkPhongLightUniforms::AddPositional(
+  const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot, LightArrays& out)
 {
   PositionalArrays arrays;
   for (vtkLight* light : lights)
@@ -324,36 +351,35 @@ void vtkPhongLightUniforms::UploadPositional(
   }
   const std::string name(prefix);
   const Plan& plan = this->ThePlan;
-  SetVec3Array(this->Program, name + "PositionVC", arrays.PositionVC);
+  AddVec3Array(name + "PositionVC", std::move(arrays.PositionVC), out);
   if (plan.Has(isSpot ? Feature::SpotAttenuation : Feature::PointAttenuation))
   {
-    SetVec3Array(this->Program, name + "Attenuation", arrays.Attenuation);
+    AddVec3Array(name + "Attenuation", std::move(arrays.Attenuation), out);
   }
   if (plan.Has(Feature::PositionalAmbient))
   {
-    SetVec3Array(this->Program, name + "Ambient", arrays.Ambient);
+    AddVec3Array(name + "Ambient", std::move(arrays.Ambient), out);
   }
-  this->UploadColors(name, arrays.Diffuse, arrays.Specular);
+  this->AddColors(name, arrays.Diffuse, arrays.Specular, out);
   if (isSpot)
   {
-    this->UploadSpotArrays(name, arrays);
+    this->AddSpotArrays(name, arrays, out);
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongLightUniforms::UploadSpotArrays(
-  const std::string& prefix, const PositionalArrays& arrays)
+void vtkPhongLightUniforms::AddSpotArrays(
+  const std::string& prefix, PositionalArrays& arrays, LightArrays& out) const
 {
-  const int count = static_cast<int>(arrays.CosCutoff.size());
-  SetVec3Array(this->Program, prefix + "AxisVC", arrays.AxisVC);
-  this->Program->SetUniform1fv((prefix + "CosCutoff").c_str(), count, arrays.CosCutoff.data());
+  AddVec3Array(prefix + "AxisVC", std::move(arrays.AxisVC), out);
+  out.push_back({ prefix + "CosCutoff", 1, std::move(arrays.CosCutoff) });
   if (this->ThePlan.Has(Feature::SpotFalloff))
   {
-    this->Program->SetUniform1fv((prefix + "Exponent").c_str(), count, arrays.Exponent.data());
+    out.push_back({ prefix + "Exponent", 1, std::move(arrays.Exponent) });
   }
   if (this->ThePlan.Has(Feature::SoftSpotEdge))
   {
-    this->Program->SetUniform1fv((prefix + "CosInner").c_str(), count, arrays.CosInner.data());
+    out.push_back({ prefix + "CosInner", 1, std::move(arrays.CosInner) });
   }
 }
 

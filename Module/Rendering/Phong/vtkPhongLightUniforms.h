@@ -9,6 +9,10 @@
  * Non-finite or negative parameters are uploaded as 0 and reported once (vtkPhongProblemLog).
  * The single-light debug view zeroes every light but the one shown.
  *
+ * Arrays() gives the per-light arrays alone, as they would be uploaded: what
+ * vtkPhongMapperCore compares from frame to frame and, under LIGHT_CONSTANTS, what the
+ * template writes into the fragment shader (vtkPhongShaderTemplate).
+ *
  * Private to the module.
  *
  * @sa vtkPhongMapperCore vtkPhongMaterialUniforms
@@ -35,11 +39,17 @@ class vtkPhongLightUniforms
 {
 public:
   using Plan = vtkPhongShaderPlan;
+  using LightArrays = std::vector<vtkPhongLightArray>;
 
+  /// `program` may be null when only Arrays() is called.
   vtkPhongLightUniforms(
     vtkShaderProgram* program, vtkRenderer* ren, const Plan& plan, vtkPhongProblemLog& log);
 
+  /// Upload every light value of the plan to the program.
   void Upload();
+
+  /// The per-light arrays of the plan (directional, point and spot lights), in upload order.
+  LightArrays Arrays();
 
 private:
   using RGB = std::array<float, 3>;
@@ -63,14 +73,15 @@ private:
   RGB ScaledColor(vtkLight* light, const double* color, double intensity, const char* which);
   int IndexOf(vtkLight* light) const;
   void ReadSceneAmbient();
-  void UploadDirectional();
-  void UploadColors(const std::string& prefix, const std::vector<float>& diffuse,
-    const std::vector<float>& specular);
+  void AddDirectional(LightArrays& out);
+  void AddColors(const std::string& prefix, const std::vector<float>& diffuse,
+    const std::vector<float>& specular, LightArrays& out) const;
   void UploadAmbient();
   RGB AttenuationOf(vtkLight* light);
   void AddSpot(vtkLight* light, const vtkPhongLightGeometry& geometry, PositionalArrays& arrays);
-  void UploadPositional(const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot);
-  void UploadSpotArrays(const std::string& prefix, const PositionalArrays& arrays);
+  void AddPositional(
+    const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot, LightArrays& out);
+  void AddSpotArrays(const std::string& prefix, PositionalArrays& arrays, LightArrays& out) const;
   void UploadEmission();
 
   vtkShaderProgram* Program;

@@ -44,6 +44,17 @@ struct vtkPhongMapperCore::Internals
   // The plan of each primitive (points, lines, polygons, strips), made afresh every frame
   // by PlanPrimitive and used until the next one.
   std::map<const vtkOpenGLHelper*, vtkPhongShaderPlan> Plans;
+  // Per primitive, under an error budget: its lights' values as last planned, in how many plans
+  // in a row they came back, and how many they must (SetSteadyLightConstants).
+  struct SteadyLights
+  {
+    std::vector<vtkPhongLightArray> Arrays;
+    int Repeats = 0;
+    int Required = 1;
+    std::vector<vtkPhongLightArray> Taken; ///< the values last written as constants
+    int TakenPlans = 0;                    ///< plans that used them since Required last moved
+  };
+  std::map<const vtkOpenGLHelper*, SteadyLights> Steady;
   std::set<std::string> Signatures;
   // Variants whose shader failed to compile: drawn with VTK's lighting instead.
   std::set<std::string> FailedSignatures;
@@ -115,6 +126,12 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
   placeholders.Spot = internal.PlaceholderSpot;
   vtkPhongShaderPlan plan =
     vtkPhongShaderPlanner(placeholders, internal.Log).MakePlan(ren, act, state, this->Options);
+  vtkPhongShaderPlan withConstants = plan;
+  if (this->SetSteadyLightConstants(cellBO, ren, withConstants) &&
+    !internal.FailedSignatures.count(withConstants.Signature))
+  {
+    plan = std::move(withConstants);
+  }
   if (plan.Handled && this->Internal->FailedSignatures.count(plan.Signature))
   {
     plan = vtkPhongShaderPlan();
@@ -131,6 +148,53 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
   // attributes to the new link; compiled behind VTK's back it would draw with stale ones.
   const bool released = cellBO.Program && !cellBO.Program->GetCompiled();
   return changed || released;
+}
+
+//------------------------------------------------------------------------------
+// Under an error budget, the lights' values go into the fragment shader as constants once they
+// came back unchanged in Required plans in a row (a still camera, or camera lights whatever the
+// camera does): a program of their own, compiled once, and kept while they stay. Each new set
+// of values taken doubles Required (up to 64), and every 4 * Required plans that use the
+// constants halve it again (down to 1): lights that keep changing and resting (scene lights as
+// the camera turns and stops, an animation's steps) compile a program where the last ones
+// served several times the repeats they waited for, soon stop where they did not, and draw
+// with the uniforms' program meanwhile.
+bool vtkPhongMapperCore::SetSteadyLightConstants(
+  const vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkPhongShaderPlan& plan)
+{
+  Internals& internal = *this->Internal;
+  if (!vtkPhongShaderPlanner::MayTakeLightConstants(plan, this->Options))
+  {
+    return false; // (the depth pre-pass plans the same primitive: its count goes on)
+  }
+  std::vector<vtkPhongLightArray> arrays =
+    vtkPhongLightUniforms(nullptr, ren, plan, internal.Log).Arrays();
+  Internals::SteadyLights& steady = internal.Steady[&cellBO];
+  if (arrays == steady.Arrays)
+  {
+    ++steady.Repeats;
+  }
+  else
+  {
+    steady.Arrays = arrays;
+    steady.Repeats = 0;
+  }
+  if (arrays != steady.Taken)
+  {
+    if (steady.Repeats < steady.Required)
+    {
+      return false;
+    }
+    steady.Taken = arrays;
+    steady.Required = std::min(2 * steady.Required, 64);
+    steady.TakenPlans = 0;
+  }
+  else if (++steady.TakenPlans >= 4 * steady.Required)
+  {
+    steady.Required = std::max(steady.Required / 2, 1);
+    steady.TakenPlans = 0;
+  }
+  return vtkPhongShaderPlanner::SetLightConstants(std::move(arrays), plan);
 }
 
 //------------------------------------------------------------------------------
@@ -481,6 +545,7 @@ void vtkPhongMapperCore::ReleaseGraphicsResources()
   // Programs live in the window's shader cache; a new context compiles again.
   this->Internal->KnownSources.clear();
   this->Internal->Plans.clear();
+  this->Internal->Steady.clear();
   this->Internal->RecentPrograms.clear();
   this->Internal->Released.clear();
 }

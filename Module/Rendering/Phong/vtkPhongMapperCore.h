@@ -157,6 +157,8 @@ protected:
   ~vtkPhongMapperCore() override;
 
 private:
+  bool SetSteadyLightConstants(
+    const vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkPhongShaderPlan& plan);
   static bool Compiles(std::map<vtkShader::Type, vtkShader*>& shaders, vtkRenderer* ren);
   void FallBackToVTK(const vtkOpenGLHelper* cellBO, vtkObject* reporter);
   static void KeepUserLightOutput(vtkShader* fragment, vtkActor* act);

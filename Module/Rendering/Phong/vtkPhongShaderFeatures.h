@@ -42,6 +42,7 @@ enum class vtkPhongFeature : unsigned char
   GeometryPassThrough,
   InterpolatedDots, ///< directional lights' N.L and L.V from dot products interpolated from the
                     ///< vertices
+  LightConstants,   ///< the lights' values written into the fragment shader, not read as uniforms
   LightSums,
   LobeBlinn,
   LobePhong,

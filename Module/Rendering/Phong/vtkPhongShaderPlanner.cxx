@@ -24,6 +24,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <sstream>
 
 namespace
@@ -575,6 +577,41 @@ vtkPhongShaderPlanner::Squaring vtkPhongShaderPlanner::SquaringOf(
 bool vtkPhongShaderPlanner::Squaring::Fits(const Plan& plan, const Options& options) const
 {
   return this->Shininess > 0 && plan.ErrorBound + this->Error <= options.ErrorBudget;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongShaderPlanner::MayTakeLightConstants(const Plan& plan, const Options& options)
+{
+  const std::size_t lights =
+    plan.DirectionalLights.size() + plan.PointLights.size() + plan.SpotLights.size();
+  return plan.Handled && !plan.DepthOnly && options.ErrorBudget > 0.0 && options.Specialize &&
+    IsLitLikeFinal(plan.DebugView) &&
+    (plan.Has(Feature::SumsPerFragment) || plan.Has(Feature::DiffusePerFragment)) && lights > 0 &&
+    lights <= 64;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongShaderPlanner::SetLightConstants(std::vector<vtkPhongLightArray> arrays, Plan& plan)
+{
+  std::ostringstream bits;
+  bits << std::hex;
+  for (const vtkPhongLightArray& array : arrays)
+  {
+    for (float value : array.Values)
+    {
+      if (!std::isfinite(value))
+      {
+        return false;
+      }
+      std::uint32_t word;
+      std::memcpy(&word, &value, sizeof(word));
+      bits << word << ' ';
+    }
+  }
+  plan.Features.Set(Feature::LightConstants);
+  plan.LightConstants = std::move(arrays);
+  plan.Signature = MakeSignature(plan, false) + " | constants " + bits.str();
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -63,6 +63,22 @@ public:
    */
   static std::size_t MaximumInterpolatedDotLights();
 
+  /**
+   * Whether the plan's fragment shader may take its lights' values as constants
+   * (LIGHT_CONSTANTS, SetLightConstants): under an error budget, in the final or BudgetUse
+   * view of the specialized shader, where the fragment shader sums lights (every sum or the
+   * diffuse one), for at most 64 lights (the unrolled loops).
+   */
+  static bool MayTakeLightConstants(const Plan& plan, const Options& options);
+
+  /**
+   * Write `arrays` (vtkPhongLightUniforms::Arrays of this plan) into the plan as its fragment
+   * shader's constants: the feature, the arrays and their exact bits in the signature, so that
+   * other values make another program. False, leaving the plan as it is, where a value is not
+   * finite.
+   */
+  static bool SetLightConstants(std::vector<vtkPhongLightArray> arrays, Plan& plan);
+
 private:
   // The terms of the equation the variant evaluates.
   struct Terms

@@ -70,6 +70,12 @@ public:
    */
   static bool FlipsNormalByDepth(const std::string& fragmentSource);
 
+  /**
+   * A float as a GLSL literal that reads back as the same float (nine significant digits,
+   * always with a decimal point or an exponent). Exported for TestPhongLightConstants.
+   */
+  VTKRENDERINGPHONG_EXPORT static std::string FloatLiteral(float value);
+
 private:
   // The state of Resolve() while it reads a template line by line.
   struct Reading
@@ -93,6 +99,7 @@ private:
     const std::string& lights, const Plan& plan) const;
   static bool ShadesWithVertexNormal(std::map<vtkShader::Type, vtkShader*>& shaders);
   void SubstituteVertexDots(vtkShader* vertexShader, const Plan& plan) const;
+  static void DeclareLightConstants(std::string& fragment, const Plan& plan);
 
   vtkObject* Reporter;
 };

@@ -1,0 +1,287 @@
+// Under an error budget, lights whose values come back unchanged go into the fragment shader
+// as constants (LIGHT_CONSTANTS, vtkPhongMapperCore): the same floats as the uniforms, so the
+// picture must not change. Checked here:
+// - every float written as a literal reads back as the same float;
+// - directional, attenuated point and soft-edged spot lights, and the Phong lobe whose vertex
+//   shader reads the directions as uniforms: the picture with constants is the picture with
+//   uniforms, pixel for pixel;
+// - when they are taken: from the second frame of a still scene; not while scene lights turn
+//   with the camera, and after each new set of values only once they held for twice as many
+//   frames as the time before, and half as many again once they served four times that;
+//   always for camera lights, however the camera turns;
+// - a change of a light's value (a colour) shows in the picture;
+// - a positional camera light, placed from the camera's frame, lights as in world coordinates;
+// - never in the exact mode (budget 0), whose shaders stay those of a mapper without budget.
+
+#include "vtkPhongShaderTemplate.h"
+#include "vtkPhongTestUtilities.h"
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+
+namespace
+{
+// The picture of the last frame, without rendering another.
+vtkSmartPointer<vtkImageData> LastFrame(vtkRenderWindow* window)
+{
+  return vtkPhongTest::Snapshot(window, false);
+}
+
+bool HasConstants(vtkPhongPolyDataMapper* mapper)
+{
+  return std::string(mapper->GetLastShaderSignature()).find("LIGHT_CONSTANTS") != std::string::npos;
+}
+
+// Random finite floats of every exponent, and the awkward ones.
+void CheckLiterals(vtkPhongTest::Checks& checks)
+{
+  std::mt19937 random(2026);
+  int wrong = 0;
+  std::string example;
+  auto check = [&](float value)
+  {
+    const std::string literal = vtkPhongShaderTemplate::FloatLiteral(value);
+    const float back = std::strtof(literal.c_str(), nullptr);
+    const bool glslFloat = literal.find_first_of(".e") != std::string::npos;
+    if (std::memcmp(&back, &value, sizeof(float)) != 0 || !glslFloat)
+    {
+      ++wrong;
+      example = literal;
+    }
+  };
+  for (float value : { 0.0f, -0.0f, 1.0f, -1.0f, 3.0f, 1.0e-45f, 3.4028235e38f, 0.1f, 1.0e7f })
+  {
+    check(value);
+  }
+  for (int i = 0; i < 100000; ++i)
+  {
+    std::uint32_t bits = random();
+    float value;
+    std::memcpy(&value, &bits, sizeof(value));
+    if (std::isfinite(value))
+    {
+      check(value);
+    }
+  }
+  checks.Expect(wrong == 0,
+    std::to_string(wrong) + " floats do not read back from their literal (e.g. " + example + ")");
+}
+
+// The Phong lobe takes N.L and L.V from dot products the vertex shader makes with the
+// directions as uniforms (INTERPOLATED_DOTS), while the fragment shader has them as constants:
+// a fresh mapper's first frame (uniforms) against its second (constants).
+void CheckPhongLobe(vtkPhongTest::Checks& checks)
+{
+  vtkPhongTest::Scene scene(160, 160);
+  scene.Renderer->AutomaticLightCreationOff();
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double key[3] = { 1.0, 1.0, 1.5 };
+  const double fill[3] = { -1.5, 0.5, 1.0 };
+  const double warm[3] = { 1.0, 0.8, 0.6 };
+  const double cool[3] = { 0.5, 0.7, 1.0 };
+  vtkPhongTest::AddLight(scene, key, origin, warm, false);
+  vtkPhongTest::AddLight(scene, fill, origin, cool, false);
+  vtkNew<vtkPhongProperty> material;
+  material->SetSpecular(0.6);
+  material->SetShininess(40.0);
+  material->SetLightingModelToPhong();
+  vtkActor* actor = vtkPhongTest::AddActor(scene, vtkPhongTest::MakeSphere(24), material);
+  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
+  mapper->SetErrorBudget(1.0);
+  mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
+  scene.LookFromZ(2.2);
+  scene.Window->Render();
+  auto uniforms = LastFrame(scene.Window);
+  scene.Window->Render();
+  const std::string signature = mapper->GetLastShaderSignature();
+  checks.Expect(signature.find("INTERPOLATED_DOTS") != std::string::npos && HasConstants(mapper),
+    "the Phong lobe: dots from the vertices and constants: " + signature);
+  const int difference = vtkPhongTest::MaxDifference(uniforms, LastFrame(scene.Window));
+  checks.Expect(difference == 0,
+    "the Phong lobe's picture with constants is its picture with uniforms (" +
+      std::to_string(difference) + " levels)");
+}
+}
+
+int TestPhongLightConstants(int, char*[])
+{
+  vtkPhongTest::Checks checks;
+  CheckLiterals(checks);
+  CheckPhongLobe(checks);
+
+  vtkPhongTest::Scene scene(160, 160);
+  scene.Renderer->AutomaticLightCreationOff();
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double warm[3] = { 1.0, 0.8, 0.6 };
+  const double cool[3] = { 0.5, 0.7, 1.0 };
+  const double green[3] = { 0.4, 1.0, 0.5 };
+  const double key[3] = { 1.0, 1.0, 1.5 };
+  const double fill[3] = { -1.5, 0.5, 1.0 };
+  vtkLight* keyLight = vtkPhongTest::AddLight(scene, key, origin, warm, false);
+  vtkPhongTest::AddLight(scene, fill, origin, cool, false);
+  const double pointAt[3] = { 0.3, -0.6, 0.9 };
+  vtkLight* point = vtkPhongTest::AddLight(scene, pointAt, origin, green, true);
+  point->SetConeAngle(180.0);
+  point->SetAttenuationValues(1.0, 0.3, 0.2);
+  const double spotAt[3] = { -0.4, -0.5, 1.2 };
+  vtkLight* spot = vtkPhongTest::AddLight(scene, spotAt, origin, warm, true);
+  spot->SetConeAngle(25.0);
+  spot->SetExponent(3.0);
+  spot->SetAttenuationValues(1.0, 0.1, 0.0);
+
+  vtkNew<vtkPhongProperty> material;
+  material->SetColor(0.8, 0.7, 0.6);
+  material->SetAmbient(0.1);
+  material->SetSpecular(0.6);
+  material->SetShininess(40.0);
+  material->SetLightingModelToBlinnPhong();
+  material->SoftSpotEdgeOn();
+  material->SetSpotEdgeWidth(5.0);
+  vtkActor* actor = vtkPhongTest::AddActor(scene, vtkPhongTest::MakeSphere(24), material);
+  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
+  // A coarse sphere: the per-vertex bound is far above the budget, so the sums stay per
+  // fragment, where the lights are read.
+  mapper->SetErrorBudget(1.0);
+  mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff); // compiles its own program
+  scene.LookFromZ(2.2);
+
+  scene.Window->Render();
+  checks.Expect(!HasConstants(mapper), "the first frame reads the uniforms");
+  auto withUniforms = LastFrame(scene.Window);
+  const int compiles = mapper->GetShaderCompileCount();
+  scene.Window->Render();
+  checks.Expect(HasConstants(mapper),
+    "the second frame of a still scene takes the constants: " +
+      std::string(mapper->GetLastShaderSignature()));
+  checks.Expect(mapper->GetShaderCompileCount() == compiles + 1,
+    "one program for them: " + std::to_string(compiles) + " then " +
+      std::to_string(mapper->GetShaderCompileCount()));
+  auto withConstants = LastFrame(scene.Window);
+  const int difference = vtkPhongTest::MaxDifference(withUniforms, withConstants);
+  checks.Expect(difference == 0,
+    "the constants' picture is the uniforms' (largest difference " + std::to_string(difference) +
+      " levels)");
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    scene.Window->Render();
+  }
+  checks.Expect(HasConstants(mapper) && mapper->GetShaderCompileCount() == compiles + 1,
+    "still frames keep them and build nothing");
+
+  // Scene lights turn with the camera: each frame brings other values.
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    camera->Azimuth(5.0);
+    scene.Window->Render();
+    checks.Expect(!HasConstants(mapper), "turning scene lights read the uniforms");
+  }
+  // The second set of values is taken after two repeats, the third after four, the fourth
+  // after eight (the next would wait 16); 4 x 16 frames with the fourth halve that, 4 x 8 more
+  // halve it again, and the fifth set waits four.
+  auto stillFrames = [&](int count)
+  {
+    for (int frame = 0; frame < count; ++frame)
+    {
+      scene.Window->Render();
+    }
+  };
+  for (int required : { 2, 4, 8, 4 })
+  {
+    for (int repeat = 1; repeat < required; ++repeat)
+    {
+      scene.Window->Render();
+      checks.Expect(!HasConstants(mapper),
+        "repeat " + std::to_string(repeat) + " of " + std::to_string(required) + " reads uniforms");
+    }
+    auto uniforms = LastFrame(scene.Window);
+    scene.Window->Render();
+    checks.Expect(
+      HasConstants(mapper), "after " + std::to_string(required) + " repeats, the constants");
+    checks.Expect(vtkPhongTest::MaxDifference(uniforms, LastFrame(scene.Window)) == 0,
+      "the same view, the same picture");
+    stillFrames(required == 8 ? 96 : 0);
+    camera->Azimuth(5.0);
+    scene.Window->Render();
+  }
+
+  // A colour change shows (the constants are not stale) and goes back to the uniforms.
+  auto before = LastFrame(scene.Window);
+  keyLight->SetColor(0.2, 0.2, 1.0);
+  scene.Window->Render();
+  checks.Expect(vtkPhongTest::MaxDifference(before, LastFrame(scene.Window)) > 20,
+    "a new light colour changes the picture");
+  checks.Expect(!HasConstants(mapper), "a changed light reads the uniforms");
+
+  // Camera lights keep their values in view coordinates, however the camera turns (a mapper
+  // of its own: the one above now waits eight repeats).
+  vtkPhongTest::Scene cameraScene(160, 160);
+  cameraScene.Renderer->AutomaticLightCreationOff();
+  vtkPhongTest::AddLight(cameraScene, key, origin, warm, false, VTK_LIGHT_TYPE_CAMERA_LIGHT);
+  vtkPhongTest::AddLight(cameraScene, fill, origin, cool, false, VTK_LIGHT_TYPE_CAMERA_LIGHT);
+  vtkNew<vtkLight> headlight;
+  headlight->SetLightTypeToHeadlight();
+  headlight->SetIntensity(0.3);
+  cameraScene.Renderer->AddLight(headlight);
+  vtkActor* cameraActor =
+    vtkPhongTest::AddActor(cameraScene, vtkPhongTest::MakeSphere(24), material);
+  auto* cameraMapper = vtkPhongPolyDataMapper::SafeDownCast(cameraActor->GetMapper());
+  cameraMapper->SetErrorBudget(1.0);
+  cameraMapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
+  cameraScene.LookFromZ(2.2);
+  vtkCamera* turning = cameraScene.Renderer->GetActiveCamera();
+  cameraScene.Window->Render();
+  bool kept = true;
+  for (int frame = 0; frame < 10; ++frame)
+  {
+    turning->Azimuth(7.0);
+    turning->Elevation(3.0);
+    turning->OrthogonalizeViewUp();
+    turning->Dolly(frame % 2 ? 1.1 : 1 / 1.1);
+    cameraScene.Window->Render();
+    kept = kept && HasConstants(cameraMapper);
+  }
+  checks.Expect(kept, "camera lights and the headlight keep the constants as the camera turns");
+  checks.Expect(cameraMapper->GetShaderCompileCount() == 2,
+    "turning with camera lights builds two programs: " +
+      std::to_string(cameraMapper->GetShaderCompileCount()));
+
+  // A positional camera light placed from its own coordinates lights as the same light placed
+  // in world coordinates through the camera's light transform.
+  cameraScene.Renderer->RemoveAllLights();
+  const double spotInCamera[3] = { 0.3, 0.4, 1.2 };
+  vtkLight* cameraSpot = vtkPhongTest::AddLight(
+    cameraScene, spotInCamera, origin, warm, true, VTK_LIGHT_TYPE_CAMERA_LIGHT);
+  cameraSpot->SetConeAngle(30.0);
+  cameraSpot->SetAttenuationValues(1.0, 0.5, 0.0);
+  cameraScene.Window->Render();
+  auto fromCamera = LastFrame(cameraScene.Window);
+  vtkMatrix4x4* cameraToWorld = turning->GetCameraLightTransformMatrix();
+  double positionWC[4] = { spotInCamera[0], spotInCamera[1], spotInCamera[2], 1.0 };
+  double focalWC[4] = { 0.0, 0.0, 0.0, 1.0 };
+  cameraToWorld->MultiplyPoint(positionWC, positionWC);
+  cameraToWorld->MultiplyPoint(focalWC, focalWC);
+  cameraScene.Renderer->RemoveAllLights();
+  vtkLight* worldSpot = vtkPhongTest::AddLight(cameraScene, positionWC, focalWC, warm, true);
+  worldSpot->SetConeAngle(30.0);
+  worldSpot->SetAttenuationValues(1.0, 0.5, 0.0);
+  cameraScene.Window->Render();
+  const int placed = vtkPhongTest::MaxDifference(fromCamera, LastFrame(cameraScene.Window));
+  checks.Expect(placed <= 1,
+    "a camera spot lights as its world placement (" + std::to_string(placed) + " levels)");
+
+  // The exact mode never takes them.
+  mapper->SetErrorBudget(0.0);
+  bool exact = true;
+  for (int frame = 0; frame < 4; ++frame)
+  {
+    scene.Window->Render();
+    exact = exact && !HasConstants(mapper);
+  }
+  checks.Expect(exact, "the exact mode reads the uniforms");
+  checks.Expect(vtkPhongTest::NoGLErrors(scene.Window, "the light constants"), "no GL error");
+  return checks.Passed ? EXIT_SUCCESS : EXIT_FAILURE;
+}
