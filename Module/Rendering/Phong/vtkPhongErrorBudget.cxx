@@ -287,9 +287,34 @@ double vtkPhongErrorBudget::WholePowerError(const vtkPhongShaderPlan& plan, int 
   // The roundings, each raised to the factors it enters: n in all (the header).
   const double u = std::ldexp(1.0, -24);
   const double gamma = n * u / (1.0 - n * u);
+  double specular = 0.0, lights = 0.0;
+  LargestContributions(plan, specular, lights);
+  // The products' own rounding; then, since the program is not the exact mode's, the rounding
+  // both programs share but each makes its own way: the cosine's (8 u, which the lobe
+  // multiplies by up to n) and the lighting's, the per-vertex modes' float margin (FloatMargin).
+  const double error = (gamma + 8.0 * n * u) * specular + RoundingMargin(lights);
+  return std::isfinite(error) ? error : HUGE_VAL;
+}
+
+//------------------------------------------------------------------------------
+double vtkPhongErrorBudget::ProgramRoundingError(const vtkPhongShaderPlan& plan)
+{
+  double specular = 0.0, lights = 0.0;
+  LargestContributions(plan, specular, lights);
+  const double error = RoundingMargin(lights);
+  return std::isfinite(error) ? error : HUGE_VAL;
+}
+
+//------------------------------------------------------------------------------
+// The lights' largest contributions (intensity, colours, largest attenuation, the materials'
+// weights and the lobe's normalization): the specular ones, and all.
+void vtkPhongErrorBudget::LargestContributions(
+  const vtkPhongShaderPlan& plan, double& specular, double& lights)
+{
   double weights[3][3];
   vtkPhongLightCulling::MaterialWeights(plan.FrontMaterial, plan.BackMaterial, weights);
-  double specular = 0.0, lights = 0.0; // the largest specular, and all, contributions
+  specular = 0.0;
+  lights = 0.0;
   const auto add = [&](vtkLight* light, bool positional)
   {
     // A(d) = 1 / max(c + l d + q d^2, 1e-20) <= 1 / c for d, l, q >= 0.
@@ -320,9 +345,4 @@ double vtkPhongErrorBudget::WholePowerError(const vtkPhongShaderPlan& plan, int 
       add(light, true);
     }
   }
-  // The products' own rounding; then, since the program is not the exact mode's, the rounding
-  // both programs share but each makes its own way: the cosine's (8 u, which the lobe
-  // multiplies by up to n) and the lighting's, the per-vertex modes' float margin (FloatMargin).
-  const double error = (gamma + 8.0 * n * u) * specular + RoundingMargin(lights);
-  return std::isfinite(error) ? error : HUGE_VAL;
 }

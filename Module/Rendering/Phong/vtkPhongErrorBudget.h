@@ -59,7 +59,18 @@ public:
    */
   static double WholePowerError(const vtkPhongShaderPlan& plan, int n);
 
+  /**
+   * How far the picture may stray (linear colour) when the plan's lights are drawn by another
+   * program with the same arithmetic, up to what its compiler makes of it (the lights as
+   * constants, LIGHT_CONSTANTS: a pow with a constant exponent may become products): the
+   * rounding both make their own way, WholePowerError's last term. +inf where a light's
+   * values bound nothing.
+   */
+  static double ProgramRoundingError(const vtkPhongShaderPlan& plan);
+
 private:
+  static void LargestContributions(
+    const vtkPhongShaderPlan& plan, double& specular, double& lights);
   // The rounding of float lighting against the double model, taken off what per-vertex
   // lighting may spend: 0.01 level plus 2e-5 of the lights' largest contributions.
   static double FloatMargin(const vtkPhongGouraudBound::Scene& scene);

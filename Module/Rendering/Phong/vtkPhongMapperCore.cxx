@@ -194,7 +194,7 @@ bool vtkPhongMapperCore::SetSteadyLightConstants(
     steady.Required = std::max(steady.Required / 2, 1);
     steady.TakenPlans = 0;
   }
-  return vtkPhongShaderPlanner::SetLightConstants(std::move(arrays), plan);
+  return vtkPhongShaderPlanner::SetLightConstants(std::move(arrays), this->Options, plan);
 }
 
 //------------------------------------------------------------------------------

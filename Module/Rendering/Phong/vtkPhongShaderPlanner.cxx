@@ -15,12 +15,12 @@
 #include "vtkPhongLightGeometry.h"
 #include "vtkPhongLightingSettings.h"
 #include "vtkPhongMaterial.h"
+#include "vtkPhongOpenGL.h"
 #include "vtkPhongProblemLog.h"
 #include "vtkPhongProperty.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShadowMapPass.h"
-#include "vtkPhongOpenGL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -587,12 +587,21 @@ bool vtkPhongShaderPlanner::MayTakeLightConstants(const Plan& plan, const Option
   return plan.Handled && !plan.DepthOnly && options.ErrorBudget > 0.0 && options.Specialize &&
     IsLitLikeFinal(plan.DebugView) &&
     (plan.Has(Feature::SumsPerFragment) || plan.Has(Feature::DiffusePerFragment)) && lights > 0 &&
-    lights <= 64;
+    lights <= 64 && plan.ErrorBound + LightConstantsCharge(plan) <= options.ErrorBudget;
 }
 
 //------------------------------------------------------------------------------
-bool vtkPhongShaderPlanner::SetLightConstants(std::vector<vtkPhongLightArray> arrays, Plan& plan)
+// The rounding another program makes its own way; the squaring's charge covers it already.
+double vtkPhongShaderPlanner::LightConstantsCharge(const Plan& plan)
 {
+  return plan.Has(Feature::WholeShininess) ? 0.0 : vtkPhongErrorBudget::ProgramRoundingError(plan);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPhongShaderPlanner::SetLightConstants(
+  std::vector<vtkPhongLightArray> arrays, const Options& options, Plan& plan)
+{
+  const double charge = LightConstantsCharge(plan);
   std::ostringstream bits;
   bits << std::hex;
   for (const vtkPhongLightArray& array : arrays)
@@ -610,6 +619,8 @@ bool vtkPhongShaderPlanner::SetLightConstants(std::vector<vtkPhongLightArray> ar
   }
   plan.Features.Set(Feature::LightConstants);
   plan.LightConstants = std::move(arrays);
+  plan.ErrorBound += charge;
+  plan.BudgetShare = plan.ErrorBound / options.ErrorBudget;
   plan.Signature = MakeSignature(plan, false) + " | constants " + bits.str();
   return true;
 }

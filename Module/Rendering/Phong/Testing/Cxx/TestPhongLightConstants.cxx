@@ -4,7 +4,10 @@
 // - every float written as a literal reads back as the same float;
 // - directional, attenuated point and soft-edged spot lights, and the Phong lobe whose vertex
 //   shader reads the directions as uniforms: the picture with constants is the picture with
-//   uniforms, pixel for pixel;
+//   uniforms, to the rounding the compiler makes its own way (at most a level at a few pixels;
+//   none on Debian 12);
+// - the plan is charged that rounding (vtkPhongErrorBudget::ProgramRoundingError) where the
+//   squaring did not charge it already;
 // - when they are taken: from the second frame of a still scene; not while scene lights turn
 //   with the camera, and after each new set of values only once they held for twice as many
 //   frames as the time before, and half as many again once they served four times that;
@@ -28,6 +31,20 @@ namespace
 vtkSmartPointer<vtkImageData> LastFrame(vtkRenderWindow* window)
 {
   return vtkPhongTest::Snapshot(window, false);
+}
+
+// The constants' picture against the uniforms': the same floats, but a compiler may specialize
+// code on a constant (Mesa 25 makes a spot's pow(x, 3) products), which rounds its own way:
+// at most a level, at a few pixels (Debian 12's llvmpipe: none).
+void ExpectSamePicture(vtkPhongTest::Checks& checks, vtkImageData* uniforms,
+  vtkImageData* constants, const std::string& what)
+{
+  const int largest = vtkPhongTest::MaxDifference(uniforms, constants);
+  const int pixels = vtkPhongTest::CountDifferentPixels(uniforms, constants, 0);
+  const int allowed = static_cast<int>(uniforms->GetNumberOfPoints() / 200);
+  checks.Expect(largest <= 1 && pixels <= allowed,
+    what + ": " + std::to_string(pixels) + " pixels differ, by up to " + std::to_string(largest) +
+      " levels (at most 1 level at " + std::to_string(allowed) + " pixels)");
 }
 
 bool HasConstants(vtkPhongPolyDataMapper* mapper)
@@ -82,7 +99,7 @@ void CheckPhongLobe(vtkPhongTest::Checks& checks)
   const double fill[3] = { -1.5, 0.5, 1.0 };
   const double warm[3] = { 1.0, 0.8, 0.6 };
   const double cool[3] = { 0.5, 0.7, 1.0 };
-  vtkPhongTest::AddLight(scene, key, origin, warm, false);
+  vtkLight* keyLight = vtkPhongTest::AddLight(scene, key, origin, warm, false);
   vtkPhongTest::AddLight(scene, fill, origin, cool, false);
   vtkNew<vtkPhongProperty> material;
   material->SetSpecular(0.6);
@@ -99,10 +116,35 @@ void CheckPhongLobe(vtkPhongTest::Checks& checks)
   const std::string signature = mapper->GetLastShaderSignature();
   checks.Expect(signature.find("INTERPOLATED_DOTS") != std::string::npos && HasConstants(mapper),
     "the Phong lobe: dots from the vertices and constants: " + signature);
-  const int difference = vtkPhongTest::MaxDifference(uniforms, LastFrame(scene.Window));
-  checks.Expect(difference == 0,
-    "the Phong lobe's picture with constants is its picture with uniforms (" +
-      std::to_string(difference) + " levels)");
+  ExpectSamePicture(checks, uniforms, LastFrame(scene.Window),
+    "the Phong lobe's picture with constants against its picture with uniforms");
+
+  // Shininess 40.5 is not squared: the constants add their own charge, 0.01 level and more
+  // (a light's new colour: a frame with the uniforms, then one with the constants); a budget
+  // below it keeps the uniforms.
+  material->SetShininess(40.5);
+  scene.Window->Render();
+  keyLight->SetIntensity(0.9);
+  scene.Window->Render();
+  const double uniformsBound = mapper->GetErrorBound();
+  const bool uniformsFirst = !HasConstants(mapper);
+  for (int frame = 0; frame < 4 && !HasConstants(mapper); ++frame) // (two repeats now)
+  {
+    scene.Window->Render();
+  }
+  const double charged = mapper->GetErrorBound();
+  checks.Expect(
+    uniformsFirst && HasConstants(mapper) && charged >= uniformsBound + 0.01 && charged < 0.05,
+    "the constants' charge: the bound went from " + std::to_string(uniformsBound) + " to " +
+      std::to_string(charged) + " levels");
+  mapper->SetErrorBudget(0.005);
+  bool kept = false;
+  for (int frame = 0; frame < 4; ++frame)
+  {
+    scene.Window->Render();
+    kept = kept || HasConstants(mapper);
+  }
+  checks.Expect(!kept, "a budget below the constants' charge keeps the uniforms");
 }
 }
 
@@ -159,11 +201,8 @@ int TestPhongLightConstants(int, char*[])
   checks.Expect(mapper->GetShaderCompileCount() == compiles + 1,
     "one program for them: " + std::to_string(compiles) + " then " +
       std::to_string(mapper->GetShaderCompileCount()));
-  auto withConstants = LastFrame(scene.Window);
-  const int difference = vtkPhongTest::MaxDifference(withUniforms, withConstants);
-  checks.Expect(difference == 0,
-    "the constants' picture is the uniforms' (largest difference " + std::to_string(difference) +
-      " levels)");
+  ExpectSamePicture(
+    checks, withUniforms, LastFrame(scene.Window), "the constants' picture against the uniforms'");
   for (int frame = 0; frame < 3; ++frame)
   {
     scene.Window->Render();
@@ -201,8 +240,8 @@ int TestPhongLightConstants(int, char*[])
     scene.Window->Render();
     checks.Expect(
       HasConstants(mapper), "after " + std::to_string(required) + " repeats, the constants");
-    checks.Expect(vtkPhongTest::MaxDifference(uniforms, LastFrame(scene.Window)) == 0,
-      "the same view, the same picture");
+    ExpectSamePicture(checks, uniforms, LastFrame(scene.Window),
+      "after " + std::to_string(required) + " repeats, the same view");
     stillFrames(required == 8 ? 96 : 0);
     camera->Azimuth(5.0);
     scene.Window->Render();
