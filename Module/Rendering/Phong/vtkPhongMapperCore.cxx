@@ -45,7 +45,7 @@ struct vtkPhongMapperCore::Internals
   // by PlanPrimitive and used until the next one.
   std::map<const vtkOpenGLHelper*, vtkPhongShaderPlan> Plans;
   // Per primitive, under an error budget: its lights' values as last planned, in how many plans
-  // in a row they came back, and how many they must (SetSteadyLightConstants).
+  // in a row they came back, and how many they must (TakeSteadyLightConstants).
   struct SteadyLights
   {
     std::vector<vtkPhongLightArray> Arrays;
@@ -126,12 +126,7 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
   placeholders.Spot = internal.PlaceholderSpot;
   vtkPhongShaderPlan plan =
     vtkPhongShaderPlanner(placeholders, internal.Log).MakePlan(ren, act, state, this->Options);
-  vtkPhongShaderPlan withConstants = plan;
-  if (this->SetSteadyLightConstants(cellBO, ren, withConstants) &&
-    !internal.FailedSignatures.count(withConstants.Signature))
-  {
-    plan = std::move(withConstants);
-  }
+  this->TakeSteadyLightConstants(cellBO, ren, plan);
   if (plan.Handled && this->Internal->FailedSignatures.count(plan.Signature))
   {
     plan = vtkPhongShaderPlan();
@@ -158,14 +153,15 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
 // constants halve it again (down to 1): lights that keep changing and resting (scene lights as
 // the camera turns and stops, an animation's steps) compile a program where the last ones
 // served several times the repeats they waited for, soon stop where they did not, and draw
-// with the uniforms' program meanwhile.
-bool vtkPhongMapperCore::SetSteadyLightConstants(
+// with the uniforms' program meanwhile. A program with constants that failed to compile is
+// not taken again.
+void vtkPhongMapperCore::TakeSteadyLightConstants(
   const vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkPhongShaderPlan& plan)
 {
   Internals& internal = *this->Internal;
   if (!vtkPhongShaderPlanner::MayTakeLightConstants(plan, this->Options))
   {
-    return false; // (the depth pre-pass plans the same primitive: its count goes on)
+    return; // (the depth pre-pass plans the same primitive: its count goes on)
   }
   std::vector<vtkPhongLightArray> arrays =
     vtkPhongLightUniforms(nullptr, ren, plan, internal.Log).Arrays();
@@ -183,7 +179,7 @@ bool vtkPhongMapperCore::SetSteadyLightConstants(
   {
     if (steady.Repeats < steady.Required)
     {
-      return false;
+      return;
     }
     steady.Taken = arrays;
     steady.Required = std::min(2 * steady.Required, 64);
@@ -194,7 +190,12 @@ bool vtkPhongMapperCore::SetSteadyLightConstants(
     steady.Required = std::max(steady.Required / 2, 1);
     steady.TakenPlans = 0;
   }
-  return vtkPhongShaderPlanner::SetLightConstants(std::move(arrays), this->Options, plan);
+  vtkPhongShaderPlan withConstants = plan;
+  if (vtkPhongShaderPlanner::SetLightConstants(std::move(arrays), this->Options, withConstants) &&
+    !internal.FailedSignatures.count(withConstants.Signature))
+  {
+    plan = std::move(withConstants);
+  }
 }
 
 //------------------------------------------------------------------------------

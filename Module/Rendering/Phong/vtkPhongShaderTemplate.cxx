@@ -457,35 +457,29 @@ void vtkPhongShaderTemplate::SubstituteFragment(vtkShader* fragmentShader, const
 // Under LIGHT_CONSTANTS the fragment shader declares the plan's light arrays as constants
 // holding the values the uniforms would (llvmpipe pays for every uniform a fragment reads:
 // 8 directional lights' directions and colours cost about a third of the frame on sphere 256,
-// docs/results/performance.md). The same floats: the arithmetic is unchanged. The vertex
-// shader, which reads some of them per vertex, keeps its uniforms.
+// docs/results/performance.md). The same floats and arithmetic, though a compiler may
+// specialize code on them (the planner charges that rounding). The vertex shader, which reads
+// some of them per vertex, keeps its uniforms.
 void vtkPhongShaderTemplate::DeclareLightConstants(std::string& fragment, const Plan& plan)
 {
   for (const vtkPhongLightArray& array : plan.LightConstants)
   {
-    const char* type = array.Components == 3 ? "vec3" : "float";
+    const std::string type = array.Components == 3 ? "vec3" : "float";
     const std::size_t count = array.Values.size() / array.Components;
     const std::string size = "[" + std::to_string(count) + "]";
+    // Each element as its type's constructor of its components: vec3(x, y, z), float(x).
     std::string values;
     for (std::size_t i = 0; i < count; ++i)
     {
-      values += i > 0 ? ", " : "";
-      if (array.Components == 3)
+      std::string components;
+      for (int c = 0; c < array.Components; ++c)
       {
-        values += "vec3(" + FloatLiteral(array.Values[3 * i]) + ", " +
-          FloatLiteral(array.Values[3 * i + 1]) + ", " + FloatLiteral(array.Values[3 * i + 2]) +
-          ")";
+        components += (c > 0 ? ", " : "") + FloatLiteral(array.Values[i * array.Components + c]);
       }
-      else
-      {
-        values += FloatLiteral(array.Values[i]);
-      }
+      values += (i > 0 ? ", " : "") + type + "(" + components + ")";
     }
-    vtkShaderProgram::Substitute(fragment,
-      std::string("uniform ") + type + " " + array.Name + size + ";",
-      std::string("const ") + type + " " + array.Name + size + " = " + type + size + "(" + values +
-        ");",
-      false);
+    vtkShaderProgram::Substitute(fragment, "uniform " + type + " " + array.Name + size + ";",
+      "const " + type + " " + array.Name + size + " = " + type + size + "(" + values + ");", false);
   }
 }
 
