@@ -1100,7 +1100,7 @@ void PlannerCost(
 std::string BudgetMode(vtkPhongPolyDataMapper* mapper)
 {
   const bool constants =
-    std::string(mapper->GetLastShaderSignature()).find("LIGHT_CONSTANTS") != std::string::npos;
+    std::string(mapper->GetLastShaderSignature()).find("UNIFORM_CONSTANTS") != std::string::npos;
   const char* mode = "fragment";
   switch (mapper->GetBudgetMode())
   {

@@ -274,7 +274,7 @@ def read_csv(path, integers, reals):
 def budget_mode(mapper):
     """The mode the mapper's last plan chose under its budget, whether it squared the lobe and
     whether its fragment shader took the lights as constants."""
-    constants = "LIGHT_CONSTANTS" in mapper.GetLastShaderSignature()
+    constants = "UNIFORM_CONSTANTS" in mapper.GetLastShaderSignature()
     return (mapper.GetBudgetModeAsString() + (", squared" if mapper.GetSquaredShininess() else "")
             + (", constants" if constants else ""))
 

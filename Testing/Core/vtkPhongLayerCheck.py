@@ -35,7 +35,7 @@ MODULE_RANKS = {
 RENDERING_RANKS = {
     # foundation: no vtkPhong include but each other
     "vtkPhongCompatibility": 0, "vtkPhongOpenGL": 0, "vtkPhongProblemLog": 0, "vtkPhongShaderFeatures": 0,
-    "vtkPhongLightingSettings": 0, "vtkPhongProperty": 0,
+    "vtkPhongLightingSettings": 0, "vtkPhongProperty": 0, "vtkPhongUniformValue": 0,
     "vtkPhongBackgroundTask": 0,
     # the plan, shared maths, small helpers
     "vtkPhongShaderPlan": 1, "vtkPhongMaterial": 1, "vtkPhongLightGeometry": 1,

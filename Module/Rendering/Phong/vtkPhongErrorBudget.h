@@ -60,9 +60,9 @@ public:
   static double WholePowerError(const vtkPhongShaderPlan& plan, int n);
 
   /**
-   * How far the picture may stray (linear colour) when the plan's lights are drawn by another
-   * program with the same arithmetic, up to what its compiler makes of it (the lights as
-   * constants, LIGHT_CONSTANTS: a pow with a constant exponent may become products): the
+   * How far the picture may stray (linear colour) when the plan is drawn by another program
+   * with the same arithmetic, up to what its compiler makes of it (the light and material values
+   * as constants, UNIFORM_CONSTANTS: a pow with a constant exponent may become products): the
    * rounding both make their own way, WholePowerError's last term. +inf where a light's
    * values bound nothing.
    */

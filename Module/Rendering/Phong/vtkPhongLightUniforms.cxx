@@ -35,29 +35,6 @@ void AppendRGB(std::vector<float>& packed, const T& rgb)
     { static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]) });
 }
 
-void UploadArray(vtkShaderProgram* program, const vtkPhongLightArray& array)
-{
-  const int count = static_cast<int>(array.Values.size()) / array.Components;
-  if (count == 0)
-  {
-    return;
-  }
-  if (array.Components == 3)
-  {
-    program->SetUniform3fv(
-      array.Name.c_str(), count, reinterpret_cast<const float(*)[3]>(array.Values.data()));
-  }
-  else
-  {
-    program->SetUniform1fv(array.Name.c_str(), count, array.Values.data());
-  }
-}
-
-void AddVec3Array(
-  const std::string& name, std::vector<float> values, std::vector<vtkPhongLightArray>& out)
-{
-  out.push_back({ name, 3, std::move(values) });
-}
 }
 
 //------------------------------------------------------------------------------
@@ -78,19 +55,13 @@ vtkPhongLightUniforms::vtkPhongLightUniforms(
 //------------------------------------------------------------------------------
 void vtkPhongLightUniforms::Upload()
 {
-  for (const vtkPhongLightArray& array : this->Arrays())
-  {
-    UploadArray(this->Program, array);
-  }
-  this->UploadAmbient();
-  this->UploadEmission();
+  vtkPhongUniformValue::Upload(this->Program, this->Values());
 }
 
 //------------------------------------------------------------------------------
-// Also sums the ambient light (the renderer's and the directional lights') for UploadAmbient.
-vtkPhongLightUniforms::LightArrays vtkPhongLightUniforms::Arrays()
+vtkPhongUniformValues vtkPhongLightUniforms::Values()
 {
-  LightArrays arrays;
+  vtkPhongUniformValues arrays;
   std::fill(std::begin(this->AmbientLight), std::end(this->AmbientLight), 0.0);
   this->ReadSceneAmbient();
   this->AddDirectional(arrays);
@@ -102,6 +73,8 @@ vtkPhongLightUniforms::LightArrays vtkPhongLightUniforms::Arrays()
   {
     this->AddPositional(this->ThePlan.SpotLights, "phongSpotLight", true, arrays);
   }
+  this->AddAmbient(arrays); // after the directional lights, which add their ambient colours
+  this->AddEmission(arrays);
   return arrays;
 }
 
@@ -187,7 +160,7 @@ void vtkPhongLightUniforms::ReadSceneAmbient()
 //------------------------------------------------------------------------------
 // Directional lights: the direction towards the light, the colours, and their ambient
 // colours added to the ambient light, which is the same everywhere.
-void vtkPhongLightUniforms::AddDirectional(LightArrays& out)
+void vtkPhongLightUniforms::AddDirectional(vtkPhongUniformValues& out)
 {
   std::vector<float> toLight, diffuse, specular;
   for (vtkLight* light : this->ThePlan.DirectionalLights)
@@ -216,7 +189,8 @@ void vtkPhongLightUniforms::AddDirectional(LightArrays& out)
   }
   if (this->ThePlan.Has(Feature::Directional))
   {
-    AddVec3Array("phongDirectionalLightToLightVC", std::move(toLight), out);
+    out.push_back(
+      vtkPhongUniformValue::Vec3Array("phongDirectionalLightToLightVC", std::move(toLight)));
     this->AddColors("phongDirectionalLight", diffuse, specular, out);
   }
 }
@@ -226,35 +200,37 @@ void vtkPhongLightUniforms::AddDirectional(LightArrays& out)
 // light's specular colour, as uploaded, is its diffuse colour (vtkPhongShaderPlanner compares
 // the same floats), the specular sums read the diffuse array, and no specular array exists.
 void vtkPhongLightUniforms::AddColors(const std::string& prefix, const std::vector<float>& diffuse,
-  const std::vector<float>& specular, LightArrays& out) const
+  const std::vector<float>& specular, vtkPhongUniformValues& out) const
 {
   if (this->ThePlan.Has(Feature::Diffuse))
   {
-    AddVec3Array(prefix + "Diffuse", diffuse, out);
+    out.push_back(vtkPhongUniformValue::Vec3Array(prefix + "Diffuse", diffuse));
   }
   if (this->ThePlan.Has(Feature::SeparateSpecularColors))
   {
-    AddVec3Array(prefix + "Specular", specular, out);
+    out.push_back(vtkPhongUniformValue::Vec3Array(prefix + "Specular", specular));
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongLightUniforms::UploadAmbient()
+// The ambient light as the fragment shader takes it: alone, or times the material's ka*Ca
+// (MATERIAL_UNIFORMS, which vtkPhongShaderTemplate decides from VTK's shader; both are given,
+// and the program uses one).
+void vtkPhongLightUniforms::AddAmbient(vtkPhongUniformValues& out) const
 {
-  if (this->Program->IsUniformUsed("phongAmbientLight"))
+  if (!this->ThePlan.Has(Feature::Ambient))
   {
-    this->Program->SetUniform3f("phongAmbientLight", this->AmbientLight);
+    return;
   }
-  if (this->Program->IsUniformUsed("phongAmbientTerm"))
-  {
-    // ka*Ca times that light, the material's values as vtkPhongMaterialUniforms checks (and
-    // reports) them.
-    vtkProperty* material = this->ThePlan.FrontMaterial;
-    float term[3];
-    vtkPhongMaterial::FiniteProduct(
-      material->GetAmbient(), material->GetAmbientColor(), this->AmbientLight, term);
-    this->Program->SetUniform3f("phongAmbientTerm", term);
-  }
+  const float light[3] = { static_cast<float>(this->AmbientLight[0]),
+    static_cast<float>(this->AmbientLight[1]), static_cast<float>(this->AmbientLight[2]) };
+  out.push_back(vtkPhongUniformValue::Vec3("phongAmbientLight", light));
+  // The material's values as vtkPhongMaterialUniforms checks (and reports) them.
+  vtkProperty* material = this->ThePlan.FrontMaterial;
+  float term[3];
+  vtkPhongMaterial::FiniteProduct(
+    material->GetAmbient(), material->GetAmbientColor(), this->AmbientLight, term);
+  out.push_back(vtkPhongUniformValue::Vec3("phongAmbientTerm", term));
 }
 
 //------------------------------------------------------------------------------
@@ -324,7 +300,7 @@ void vtkPhongLightUniforms::AddSpot(
 
 //------------------------------------------------------------------------------
 void vtkPhongLightUniforms::AddPositional(
-  const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot, LightArrays& out)
+  const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot, vtkPhongUniformValues& out)
 {
   PositionalArrays arrays;
   for (vtkLight* light : lights)
@@ -351,14 +327,15 @@ void vtkPhongLightUniforms::AddPositional(
   }
   const std::string name(prefix);
   const Plan& plan = this->ThePlan;
-  AddVec3Array(name + "PositionVC", std::move(arrays.PositionVC), out);
+  out.push_back(vtkPhongUniformValue::Vec3Array(name + "PositionVC", std::move(arrays.PositionVC)));
   if (plan.Has(isSpot ? Feature::SpotAttenuation : Feature::PointAttenuation))
   {
-    AddVec3Array(name + "Attenuation", std::move(arrays.Attenuation), out);
+    out.push_back(
+      vtkPhongUniformValue::Vec3Array(name + "Attenuation", std::move(arrays.Attenuation)));
   }
   if (plan.Has(Feature::PositionalAmbient))
   {
-    AddVec3Array(name + "Ambient", std::move(arrays.Ambient), out);
+    out.push_back(vtkPhongUniformValue::Vec3Array(name + "Ambient", std::move(arrays.Ambient)));
   }
   this->AddColors(name, arrays.Diffuse, arrays.Specular, out);
   if (isSpot)
@@ -369,23 +346,26 @@ void vtkPhongLightUniforms::AddPositional(
 
 //------------------------------------------------------------------------------
 void vtkPhongLightUniforms::AddSpotArrays(
-  const std::string& prefix, PositionalArrays& arrays, LightArrays& out) const
+  const std::string& prefix, PositionalArrays& arrays, vtkPhongUniformValues& out) const
 {
-  AddVec3Array(prefix + "AxisVC", std::move(arrays.AxisVC), out);
-  out.push_back({ prefix + "CosCutoff", 1, std::move(arrays.CosCutoff) });
+  out.push_back(vtkPhongUniformValue::Vec3Array(prefix + "AxisVC", std::move(arrays.AxisVC)));
+  out.push_back(
+    vtkPhongUniformValue::FloatArray(prefix + "CosCutoff", std::move(arrays.CosCutoff)));
   if (this->ThePlan.Has(Feature::SpotFalloff))
   {
-    out.push_back({ prefix + "Exponent", 1, std::move(arrays.Exponent) });
+    out.push_back(
+      vtkPhongUniformValue::FloatArray(prefix + "Exponent", std::move(arrays.Exponent)));
   }
   if (this->ThePlan.Has(Feature::SoftSpotEdge))
   {
-    out.push_back({ prefix + "CosInner", 1, std::move(arrays.CosInner) });
+    out.push_back(
+      vtkPhongUniformValue::FloatArray(prefix + "CosInner", std::move(arrays.CosInner)));
   }
 }
 
 //------------------------------------------------------------------------------
 // Ke of each side, and the back side's shininess (VTK has no uniform for it).
-void vtkPhongLightUniforms::UploadEmission()
+void vtkPhongLightUniforms::AddEmission(vtkPhongUniformValues& out)
 {
   const Plan& plan = this->ThePlan;
   if (plan.Has(Feature::Emission))
@@ -402,16 +382,18 @@ void vtkPhongLightUniforms::UploadEmission()
       }
       return emission;
     };
-    this->Program->SetUniform3f("phongEmission", emissionOf(plan.FrontMaterial, "front").data());
+    out.push_back(
+      vtkPhongUniformValue::Vec3("phongEmission", emissionOf(plan.FrontMaterial, "front").data()));
     if (plan.Has(Feature::BackMaterial))
     {
-      this->Program->SetUniform3f("phongEmissionBF", emissionOf(plan.BackMaterial, "back").data());
+      out.push_back(vtkPhongUniformValue::Vec3(
+        "phongEmissionBF", emissionOf(plan.BackMaterial, "back").data()));
     }
   }
-  if (this->Program->IsUniformUsed("phongShininessBF"))
+  if (plan.Has(Feature::TwoSided))
   {
-    this->Program->SetUniformf("phongShininessBF",
-      static_cast<float>(std::min(
-        vtkPhongMaterial::ShininessOf(plan.BackMaterial), vtkPhongProblemLog::LargestValue)));
+    const double shininess = vtkPhongMaterial::ShininessOf(plan.BackMaterial);
+    out.push_back(vtkPhongUniformValue::Float("phongShininessBF",
+      static_cast<float>(std::min(shininess, vtkPhongProblemLog::LargestValue))));
   }
 }

@@ -9,9 +9,9 @@
  * Non-finite or negative parameters are uploaded as 0 and reported once (vtkPhongProblemLog).
  * The single-light debug view zeroes every light but the one shown.
  *
- * Arrays() gives the per-light arrays alone, as they would be uploaded: what
- * vtkPhongMapperCore compares from frame to frame and, under LIGHT_CONSTANTS, what the
- * template writes into the fragment shader (vtkPhongShaderTemplate).
+ * Values() gives every value as it is uploaded (vtkPhongUniformValue): what vtkPhongMapperCore
+ * compares from frame to frame and, under UNIFORM_CONSTANTS, what the template writes into the
+ * fragment shader (vtkPhongShaderTemplate).
  *
  * Private to the module.
  *
@@ -39,17 +39,17 @@ class vtkPhongLightUniforms
 {
 public:
   using Plan = vtkPhongShaderPlan;
-  using LightArrays = std::vector<vtkPhongLightArray>;
 
-  /// `program` may be null when only Arrays() is called.
+  /// `program` may be null when only Values() is called.
   vtkPhongLightUniforms(
     vtkShaderProgram* program, vtkRenderer* ren, const Plan& plan, vtkPhongProblemLog& log);
 
   /// Upload every light value of the plan to the program.
   void Upload();
 
-  /// The per-light arrays of the plan (directional, point and spot lights), in upload order.
-  LightArrays Arrays();
+  /// Every light value of the plan: the per-light arrays (directional, point and spot lights),
+  /// the ambient light and the emission, in upload order.
+  vtkPhongUniformValues Values();
 
 private:
   using RGB = std::array<float, 3>;
@@ -73,16 +73,17 @@ private:
   RGB ScaledColor(vtkLight* light, const double* color, double intensity, const char* which);
   int IndexOf(vtkLight* light) const;
   void ReadSceneAmbient();
-  void AddDirectional(LightArrays& out);
+  void AddDirectional(vtkPhongUniformValues& out);
   void AddColors(const std::string& prefix, const std::vector<float>& diffuse,
-    const std::vector<float>& specular, LightArrays& out) const;
-  void UploadAmbient();
+    const std::vector<float>& specular, vtkPhongUniformValues& out) const;
+  void AddAmbient(vtkPhongUniformValues& out) const;
   RGB AttenuationOf(vtkLight* light);
   void AddSpot(vtkLight* light, const vtkPhongLightGeometry& geometry, PositionalArrays& arrays);
-  void AddPositional(
-    const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot, LightArrays& out);
-  void AddSpotArrays(const std::string& prefix, PositionalArrays& arrays, LightArrays& out) const;
-  void UploadEmission();
+  void AddPositional(const std::vector<vtkLight*>& lights, const char* prefix, bool isSpot,
+    vtkPhongUniformValues& out);
+  void AddSpotArrays(
+    const std::string& prefix, PositionalArrays& arrays, vtkPhongUniformValues& out) const;
+  void AddEmission(vtkPhongUniformValues& out);
 
   vtkShaderProgram* Program;
   vtkRenderer* Renderer;

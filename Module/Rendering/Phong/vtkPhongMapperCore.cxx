@@ -44,17 +44,17 @@ struct vtkPhongMapperCore::Internals
   // The plan of each primitive (points, lines, polygons, strips), made afresh every frame
   // by PlanPrimitive and used until the next one.
   std::map<const vtkOpenGLHelper*, vtkPhongShaderPlan> Plans;
-  // Per primitive, under an error budget: its lights' values as last planned, in how many plans
-  // in a row they came back, and how many they must (TakeSteadyLightConstants).
-  struct SteadyLights
+  // Per primitive, under an error budget: its light and material values as last planned, in how
+  // many plans in a row they came back, and how many they must (TakeSteadyConstants).
+  struct SteadyValues
   {
-    std::vector<vtkPhongLightArray> Arrays;
+    vtkPhongUniformValues Values;
     int Repeats = 0;
     int Required = 1;
-    std::vector<vtkPhongLightArray> Taken; ///< the values last written as constants
-    int TakenPlans = 0;                    ///< plans that used them since Required last moved
+    vtkPhongUniformValues Taken; ///< the values last written as constants
+    int TakenPlans = 0;          ///< plans that used them since Required last moved
   };
-  std::map<const vtkOpenGLHelper*, SteadyLights> Steady;
+  std::map<const vtkOpenGLHelper*, SteadyValues> Steady;
   std::set<std::string> Signatures;
   // Variants whose shader failed to compile: drawn with VTK's lighting instead.
   std::set<std::string> FailedSignatures;
@@ -126,7 +126,7 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
   placeholders.Spot = internal.PlaceholderSpot;
   vtkPhongShaderPlan plan =
     vtkPhongShaderPlanner(placeholders, internal.Log).MakePlan(ren, act, state, this->Options);
-  this->TakeSteadyLightConstants(cellBO, ren, plan);
+  this->TakeSteadyConstants(cellBO, ren, plan);
   if (plan.Handled && this->Internal->FailedSignatures.count(plan.Signature))
   {
     plan = vtkPhongShaderPlan();
@@ -146,42 +146,43 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
 }
 
 //------------------------------------------------------------------------------
-// Under an error budget, the lights' values go into the fragment shader as constants once they
-// came back unchanged in Required plans in a row (a still camera, or camera lights whatever the
-// camera does): a program of their own, compiled once, and kept while they stay. Each new set
-// of values taken doubles Required (up to 64), and every 4 * Required plans that use the
+// Under an error budget, the light and material values go into the fragment shader as constants
+// once they came back unchanged in Required plans in a row (a still camera, or camera lights
+// whatever the camera does): a program of their own, compiled once, and kept while they stay. Each
+// new set of values taken doubles Required (up to 64), and every 4 * Required plans that use the
 // constants halve it again (down to 1): lights that keep changing and resting (scene lights as
 // the camera turns and stops, an animation's steps) compile a program where the last ones
 // served several times the repeats they waited for, soon stop where they did not, and draw
 // with the uniforms' program meanwhile. A program with constants that failed to compile is
 // not taken again.
-void vtkPhongMapperCore::TakeSteadyLightConstants(
+void vtkPhongMapperCore::TakeSteadyConstants(
   const vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkPhongShaderPlan& plan)
 {
   Internals& internal = *this->Internal;
-  if (!vtkPhongShaderPlanner::MayTakeLightConstants(plan, this->Options))
+  if (!vtkPhongShaderPlanner::MayTakeConstants(plan, this->Options))
   {
     return; // (the depth pre-pass plans the same primitive: its count goes on)
   }
-  std::vector<vtkPhongLightArray> arrays =
-    vtkPhongLightUniforms(nullptr, ren, plan, internal.Log).Arrays();
-  Internals::SteadyLights& steady = internal.Steady[&cellBO];
-  if (arrays == steady.Arrays)
+  vtkPhongUniformValues values = vtkPhongLightUniforms(nullptr, ren, plan, internal.Log).Values();
+  vtkPhongUniformValues material = vtkPhongMaterialUniforms(nullptr, plan, internal.Log).Values();
+  values.insert(values.end(), material.begin(), material.end());
+  Internals::SteadyValues& steady = internal.Steady[&cellBO];
+  if (values == steady.Values)
   {
     ++steady.Repeats;
   }
   else
   {
-    steady.Arrays = arrays;
+    steady.Values = values;
     steady.Repeats = 0;
   }
-  if (arrays != steady.Taken)
+  if (values != steady.Taken)
   {
     if (steady.Repeats < steady.Required)
     {
       return;
     }
-    steady.Taken = arrays;
+    steady.Taken = values;
     steady.Required = std::min(2 * steady.Required, 64);
     steady.TakenPlans = 0;
   }
@@ -191,7 +192,7 @@ void vtkPhongMapperCore::TakeSteadyLightConstants(
     steady.TakenPlans = 0;
   }
   vtkPhongShaderPlan withConstants = plan;
-  if (vtkPhongShaderPlanner::SetLightConstants(std::move(arrays), this->Options, withConstants) &&
+  if (vtkPhongShaderPlanner::SetConstants(std::move(values), this->Options, withConstants) &&
     !internal.FailedSignatures.count(withConstants.Signature))
   {
     plan = std::move(withConstants);

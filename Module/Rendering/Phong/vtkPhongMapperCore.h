@@ -157,7 +157,7 @@ protected:
   ~vtkPhongMapperCore() override;
 
 private:
-  void TakeSteadyLightConstants(
+  void TakeSteadyConstants(
     const vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkPhongShaderPlan& plan);
   static bool Compiles(std::map<vtkShader::Type, vtkShader*>& shaders, vtkRenderer* ren);
   void FallBackToVTK(const vtkOpenGLHelper* cellBO, vtkObject* reporter);

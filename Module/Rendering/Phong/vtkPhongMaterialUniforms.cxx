@@ -21,17 +21,26 @@ vtkPhongMaterialUniforms::vtkPhongMaterialUniforms(
 //------------------------------------------------------------------------------
 void vtkPhongMaterialUniforms::Upload()
 {
-  this->UploadSide(this->ThePlan.FrontMaterial, "", true);
-  this->UploadProducts();
-  // VTK declares back-face uniforms when the actor has a back property; with one-sided
-  // lighting the contract uses the front material on both faces.
-  this->UploadSide(
-    this->ThePlan.BackMaterial, "BF", this->ThePlan.BackMaterial != this->ThePlan.FrontMaterial);
+  vtkPhongUniformValues values = this->Values();
   if (this->ThePlan.Has(vtkPhongFeature::DebugBudget))
   {
-    this->Side.clear(); // one colour for both sides
-    this->Set("phongBudgetUse", BudgetUseColor(this->ThePlan));
+    values.push_back(
+      vtkPhongUniformValue::Vec3("phongBudgetUse", BudgetUseColor(this->ThePlan).data()));
   }
+  vtkPhongUniformValue::Upload(this->Program, values);
+}
+
+//------------------------------------------------------------------------------
+vtkPhongUniformValues vtkPhongMaterialUniforms::Values()
+{
+  vtkPhongUniformValues values;
+  this->AddSide(this->ThePlan.FrontMaterial, "", true, values);
+  this->AddProducts(values);
+  // VTK declares back-face uniforms when the actor has a back property; with one-sided
+  // lighting the contract uses the front material on both faces.
+  this->AddSide(this->ThePlan.BackMaterial, "BF",
+    this->ThePlan.BackMaterial != this->ThePlan.FrontMaterial, values);
+  return values;
 }
 
 //------------------------------------------------------------------------------
@@ -50,7 +59,8 @@ vtkPhongMaterialUniforms::RGB vtkPhongMaterialUniforms::BudgetUseColor(const Pla
 //------------------------------------------------------------------------------
 // The selection of material per face is VTK's (Color::Impl); only values change here. Every
 // value is checked (and a problem reported) whether or not the variant reads it.
-void vtkPhongMaterialUniforms::UploadSide(vtkProperty* material, const char* suffix, bool report)
+void vtkPhongMaterialUniforms::AddSide(
+  vtkProperty* material, const char* suffix, bool report, vtkPhongUniformValues& out)
 {
   this->Side = suffix;
   this->SideName = this->Side.empty() ? "front" : "back";
@@ -67,20 +77,21 @@ void vtkPhongMaterialUniforms::UploadSide(vtkProperty* material, const char* suf
   const float ambient = this->CheckedCoefficient(material->GetAmbient(), "ambient");
   const float diffuse = this->CheckedCoefficient(material->GetDiffuse(), "diffuse");
   const float specular = this->CheckedCoefficient(material->GetSpecular(), "specular");
-  this->Set("ambientColorUniform", ambientColor);
-  this->Set("diffuseColorUniform", diffuseColor);
-  this->Set("opacityUniform", opacity);
-  this->Set("ambientIntensity", ambient);
-  this->Set("diffuseIntensity", diffuse);
+  const std::string& side = this->Side;
+  out.push_back(vtkPhongUniformValue::Vec3("ambientColorUniform" + side, ambientColor.data()));
+  out.push_back(vtkPhongUniformValue::Vec3("diffuseColorUniform" + side, diffuseColor.data()));
+  out.push_back(vtkPhongUniformValue::Float("opacityUniform" + side, opacity));
+  out.push_back(vtkPhongUniformValue::Float("ambientIntensity" + side, ambient));
+  out.push_back(vtkPhongUniformValue::Float("diffuseIntensity" + side, diffuse));
   if (this->ThePlan.Has(vtkPhongFeature::Specular))
   {
-    this->Set("specularIntensity", specular);
-    this->Set("specularColorUniform", specularColor);
-    this->Set("specularPowerUniform",
+    out.push_back(vtkPhongUniformValue::Float("specularIntensity" + side, specular));
+    out.push_back(vtkPhongUniformValue::Vec3("specularColorUniform" + side, specularColor.data()));
+    out.push_back(vtkPhongUniformValue::Float("specularPowerUniform" + side,
       static_cast<float>(this->Log.Bounded(
         shininess, vtkPhongProblemLog::LargestValue,
         [&](std::ostream& os) { os << "The " << this->SideName << " material's shininess"; },
-        this->Report)));
+        this->Report))));
   }
 }
 
@@ -124,43 +135,21 @@ float vtkPhongMaterialUniforms::CheckedCoefficient(double value, const char* whi
 
 //------------------------------------------------------------------------------
 // The ready-made products of MATERIAL_UNIFORMS (front material only: that variant has no
-// back material).
-void vtkPhongMaterialUniforms::UploadProducts()
+// back material), which vtkPhongShaderTemplate decides from VTK's shader: given always, used
+// by that variant alone.
+void vtkPhongMaterialUniforms::AddProducts(vtkPhongUniformValues& out) const
 {
   vtkProperty* front = this->ThePlan.FrontMaterial;
   const double specularScale = vtkPhongMaterial::LobeNormalization(
     vtkPhongMaterial::LightingModelOf(front), vtkPhongMaterial::ShininessOf(front));
   auto product = [&](const char* name, double coefficient, const double* color, double scale)
   {
-    if (this->Program->IsUniformUsed(name))
-    {
-      const double scales[3] = { scale, scale, scale };
-      float value[3];
-      vtkPhongMaterial::FiniteProduct(coefficient, color, scales, value);
-      this->Program->SetUniform3f(name, value);
-    }
+    const double scales[3] = { scale, scale, scale };
+    float value[3];
+    vtkPhongMaterial::FiniteProduct(coefficient, color, scales, value);
+    out.push_back(vtkPhongUniformValue::Vec3(name, value));
   };
   product("phongMaterialAmbient", front->GetAmbient(), front->GetAmbientColor(), 1.0);
   product("phongMaterialDiffuse", front->GetDiffuse(), front->GetDiffuseColor(), 1.0);
   product("phongMaterialSpecular", front->GetSpecular(), front->GetSpecularColor(), specularScale);
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongMaterialUniforms::Set(const char* name, const RGB& value)
-{
-  const std::string uniform = name + this->Side;
-  if (this->Program->IsUniformUsed(uniform.c_str()))
-  {
-    this->Program->SetUniform3f(uniform.c_str(), value.data());
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongMaterialUniforms::Set(const char* name, float value)
-{
-  const std::string uniform = name + this->Side;
-  if (this->Program->IsUniformUsed(uniform.c_str()))
-  {
-    this->Program->SetUniformf(uniform.c_str(), value);
-  }
 }

@@ -8,6 +8,7 @@
  * SpecularPower to 128), the specular colour times the lobe's energy normalization, non-finite
  * colours and coefficients as 0 (reported once), the front material on both faces with
  * one-sided lighting, and the ready-made products k*C of the MATERIAL_UNIFORMS variant.
+ * Values() gives them as they are uploaded (vtkPhongUniformValue), for UNIFORM_CONSTANTS.
  *
  * Private to the module.
  *
@@ -30,20 +31,24 @@ class vtkPhongMaterialUniforms
 public:
   using Plan = vtkPhongShaderPlan;
 
+  /// `program` may be null when only Values() is called.
   vtkPhongMaterialUniforms(vtkShaderProgram* program, const Plan& plan, vtkPhongProblemLog& log);
 
+  /// Upload the material values and the BudgetUse view's colour.
   void Upload();
+
+  /// Every material value of the plan, front side first (the BudgetUse colour aside: it is the
+  /// plan's, not the material's).
+  vtkPhongUniformValues Values();
 
 private:
   using RGB = std::array<float, 3>;
 
-  void UploadSide(vtkProperty* material, const char* suffix, bool report);
+  void AddSide(vtkProperty* material, const char* suffix, bool report, vtkPhongUniformValues& out);
   RGB CheckedColor(const double* color, double scale, const char* which);
   static RGB BudgetUseColor(const Plan& plan);
   float CheckedCoefficient(double value, const char* which);
-  void UploadProducts();
-  void Set(const char* name, const RGB& value);
-  void Set(const char* name, float value);
+  void AddProducts(vtkPhongUniformValues& out) const;
 
   vtkShaderProgram* Program;
   const Plan& ThePlan;

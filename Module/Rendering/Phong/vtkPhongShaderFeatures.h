@@ -42,7 +42,6 @@ enum class vtkPhongFeature : unsigned char
   GeometryPassThrough,
   InterpolatedDots, ///< directional lights' N.L and L.V from dot products interpolated from the
                     ///< vertices
-  LightConstants,   ///< the lights' values written into the fragment shader, not read as uniforms
   LightSums,
   LobeBlinn,
   LobePhong,
@@ -69,6 +68,7 @@ enum class vtkPhongFeature : unsigned char
   SumsPerFragment,
   SumsPerVertex,
   TwoSided,
+  UniformConstants, ///< light and material values written into the fragment shader as constants
   ViewVector,
   WholeShininess, ///< under an error budget, the lobe's whole shininess raised by squaring
   Count           ///< not a feature: the number of features

@@ -13,6 +13,7 @@
 #define vtkPhongShaderPlan_h
 
 #include "vtkPhongShaderFeatures.h" // for vtkPhongFeatureSet
+#include "vtkPhongUniformValue.h"   // for vtkPhongUniformValues
 
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -79,21 +80,6 @@ struct vtkPhongPlanOptions
 };
 
 /**
- * One uniform array of light values (a value per light), as vtkPhongLightUniforms uploads it.
- */
-struct vtkPhongLightArray
-{
-  std::string Name;   ///< the GLSL array, e.g. phongDirectionalLightToLightVC
-  int Components = 3; ///< 3: vec3 elements, 1: float elements
-  std::vector<float> Values;
-  bool operator==(const vtkPhongLightArray& other) const
-  {
-    return this->Name == other.Name && this->Components == other.Components &&
-      this->Values == other.Values;
-  }
-};
-
-/**
  * Everything vtkPhongShaderPlanner::MakePlan() decided for one primitive.
  */
 struct vtkPhongShaderPlan
@@ -119,9 +105,9 @@ struct vtkPhongShaderPlan
   double BudgetShare = 0.0;
   /// under WHOLE_SHININESS, the shininess n (2 to 1000) the lobe raises by squaring; else 0
   int WholeShininess = 0;
-  /// under LIGHT_CONSTANTS, the light arrays the fragment shader declares as constants
-  /// (vtkPhongMapperCore: lights that stayed the same, under an error budget)
-  std::vector<vtkPhongLightArray> LightConstants;
+  /// under UNIFORM_CONSTANTS, the uniforms the fragment shader declares as constants instead
+  /// (vtkPhongMapperCore: light and material values that stayed the same, under an error budget)
+  vtkPhongUniformValues Constants;
   bool Has(vtkPhongFeature feature) const { return this->Features.Has(feature); }
 };
 

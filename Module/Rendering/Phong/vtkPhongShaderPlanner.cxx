@@ -580,33 +580,33 @@ bool vtkPhongShaderPlanner::Squaring::Fits(const Plan& plan, const Options& opti
 }
 
 //------------------------------------------------------------------------------
-bool vtkPhongShaderPlanner::MayTakeLightConstants(const Plan& plan, const Options& options)
+bool vtkPhongShaderPlanner::MayTakeConstants(const Plan& plan, const Options& options)
 {
   const std::size_t lights =
     plan.DirectionalLights.size() + plan.PointLights.size() + plan.SpotLights.size();
   return plan.Handled && !plan.DepthOnly && options.ErrorBudget > 0.0 && options.Specialize &&
     IsLitLikeFinal(plan.DebugView) &&
     (plan.Has(Feature::SumsPerFragment) || plan.Has(Feature::DiffusePerFragment)) && lights > 0 &&
-    lights <= 64 && plan.ErrorBound + LightConstantsCharge(plan) <= options.ErrorBudget;
+    lights <= 64 && plan.ErrorBound + ConstantsCharge(plan) <= options.ErrorBudget;
 }
 
 //------------------------------------------------------------------------------
 // The rounding another program makes its own way; the squaring's charge covers it already.
-double vtkPhongShaderPlanner::LightConstantsCharge(const Plan& plan)
+double vtkPhongShaderPlanner::ConstantsCharge(const Plan& plan)
 {
   return plan.Has(Feature::WholeShininess) ? 0.0 : vtkPhongErrorBudget::ProgramRoundingError(plan);
 }
 
 //------------------------------------------------------------------------------
-bool vtkPhongShaderPlanner::SetLightConstants(
-  std::vector<vtkPhongLightArray> arrays, const Options& options, Plan& plan)
+bool vtkPhongShaderPlanner::SetConstants(
+  vtkPhongUniformValues values, const Options& options, Plan& plan)
 {
-  const double charge = LightConstantsCharge(plan);
+  const double charge = ConstantsCharge(plan);
   std::ostringstream bits;
   bits << std::hex;
-  for (const vtkPhongLightArray& array : arrays)
+  for (const vtkPhongUniformValue& uniform : values)
   {
-    for (float value : array.Values)
+    for (float value : uniform.Values)
     {
       if (!std::isfinite(value))
       {
@@ -617,8 +617,8 @@ bool vtkPhongShaderPlanner::SetLightConstants(
       bits << word << ' ';
     }
   }
-  plan.Features.Set(Feature::LightConstants);
-  plan.LightConstants = std::move(arrays);
+  plan.Features.Set(Feature::UniformConstants);
+  plan.Constants = std::move(values);
   plan.ErrorBound += charge;
   plan.BudgetShare = plan.ErrorBound / options.ErrorBudget;
   plan.Signature = MakeSignature(plan, false) + " | constants " + bits.str();

@@ -64,24 +64,24 @@ public:
   static std::size_t MaximumInterpolatedDotLights();
 
   /**
-   * Whether the plan's fragment shader may take its lights' values as constants
-   * (LIGHT_CONSTANTS, SetLightConstants): under an error budget, in the final or BudgetUse
+   * Whether the plan's fragment shader may take its light and material values as constants
+   * (UNIFORM_CONSTANTS, SetConstants): under an error budget, in the final or BudgetUse
    * view of the specialized shader, where the fragment shader sums lights (every sum or the
    * diffuse one), for at most 64 lights (the unrolled loops), and where their charge fits.
    */
-  static bool MayTakeLightConstants(const Plan& plan, const Options& options);
+  static bool MayTakeConstants(const Plan& plan, const Options& options);
 
   /**
-   * Write `arrays` (vtkPhongLightUniforms::Arrays of this plan) into the plan as its fragment
-   * shader's constants: the feature, the arrays and their exact bits in the signature, so that
-   * other values make another program. The same floats, but the compiler may specialize code
-   * on them (a pow with a constant exponent as products): the plan is charged the rounding
-   * another program makes its own way (vtkPhongErrorBudget::ProgramRoundingError; already in
-   * WHOLE_SHININESS's charge). False, leaving the plan as it is, where that does not fit the
-   * budget (MayTakeLightConstants checks it) or a value is not finite.
+   * Write `values` (vtkPhongLightUniforms::Values and vtkPhongMaterialUniforms::Values of this
+   * plan) into the plan as its fragment shader's constants: the feature, the values and their
+   * exact bits in the signature, so that other values make another program. The same floats, but
+   * the compiler may specialize code on them (a pow with a constant exponent as products): the plan
+   * is charged the rounding another program makes its own way
+   * (vtkPhongErrorBudget::ProgramRoundingError; already in WHOLE_SHININESS's charge). False,
+   * leaving the plan as it is, where that does not fit the budget (MayTakeConstants checks it) or a
+   * value is not finite.
    */
-  static bool SetLightConstants(
-    std::vector<vtkPhongLightArray> arrays, const Options& options, Plan& plan);
+  static bool SetConstants(vtkPhongUniformValues values, const Options& options, Plan& plan);
 
 private:
   // The terms of the equation the variant evaluates.
@@ -95,7 +95,7 @@ private:
     bool LightSums = false; ///< any per-light sum: diffuse, specular or positional ambient
   };
 
-  static double LightConstantsCharge(const Plan& plan);
+  static double ConstantsCharge(const Plan& plan);
   static bool IsLeftToVTK(vtkActor* actor, const PrimitiveState& state);
   static void SortLightsByKind(const std::vector<vtkLight*>& lights, Plan& plan);
   void PickDebugLight(const std::vector<vtkLight*>& lights, const Options& options, Plan& plan);

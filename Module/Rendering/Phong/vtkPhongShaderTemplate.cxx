@@ -446,40 +446,52 @@ void vtkPhongShaderTemplate::SubstituteFragment(vtkShader* fragmentShader, const
   // must escape the texture (emission, specular) is added right after it.
   vtkShaderProgram::Substitute(fragment, "//VTK::TCoord::Impl",
     "//VTK::TCoord::Impl\n" + this->Resolve(vtkPhongFS, "PostTexture", plan), false);
-  if (plan.Has(Feature::LightConstants))
+  if (plan.Has(Feature::UniformConstants))
   {
-    DeclareLightConstants(fragment, plan);
+    DeclareConstants(fragment, plan);
   }
   fragmentShader->SetSource(fragment);
 }
 
 //------------------------------------------------------------------------------
-// Under LIGHT_CONSTANTS the fragment shader declares the plan's light arrays as constants
-// holding the values the uniforms would (llvmpipe pays for every uniform a fragment reads:
-// 8 directional lights' directions and colours cost about a third of the frame on sphere 256,
-// docs/results/performance.md). The same floats and arithmetic, though a compiler may
-// specialize code on them (the planner charges that rounding). The vertex shader, which reads
-// some of them per vertex, keeps its uniforms.
-void vtkPhongShaderTemplate::DeclareLightConstants(std::string& fragment, const Plan& plan)
+// Under UNIFORM_CONSTANTS the fragment shader declares the plan's light and material values as
+// constants holding the values the uniforms would (llvmpipe pays for every uniform a fragment
+// reads: 8 directional lights' directions and colours cost about a third of the frame on sphere
+// 256, docs/results/performance.md). The same floats and arithmetic, though a compiler may
+// specialize code on them (the planner charges that rounding). A value the fragment shader does
+// not declare (VTK's back material without one, a light value only the vertex shader reads)
+// stays a uniform there.
+void vtkPhongShaderTemplate::DeclareConstants(std::string& fragment, const Plan& plan)
 {
-  for (const vtkPhongLightArray& array : plan.LightConstants)
+  for (const vtkPhongUniformValue& uniform : plan.Constants)
   {
-    const std::string type = array.Components == 3 ? "vec3" : "float";
-    const std::size_t count = array.Values.size() / array.Components;
-    const std::string size = "[" + std::to_string(count) + "]";
+    const std::string type = uniform.ElementType();
+    const std::size_t count = uniform.Count();
     // Each element as its type's constructor of its components: vec3(x, y, z), float(x).
     std::string values;
     for (std::size_t i = 0; i < count; ++i)
     {
       std::string components;
-      for (int c = 0; c < array.Components; ++c)
+      for (int c = 0; c < uniform.Components; ++c)
       {
-        components += (c > 0 ? ", " : "") + FloatLiteral(array.Values[i * array.Components + c]);
+        components +=
+          (c > 0 ? ", " : "") + FloatLiteral(uniform.Values[i * uniform.Components + c]);
       }
       values += (i > 0 ? ", " : "") + type + "(" + components + ")";
     }
-    vtkShaderProgram::Substitute(fragment, "uniform " + type + " " + array.Name + size + ";",
-      "const " + type + " " + array.Name + size + " = " + type + size + "(" + values + ");", false);
+    const std::string declared = type + " " + uniform.Name;
+    if (uniform.IsArray)
+    {
+      const std::string size = "[" + std::to_string(count) + "]";
+      values = type + size + "(" + values + ")";
+      vtkShaderProgram::Substitute(fragment, "uniform " + declared + size + ";",
+        "const " + declared + size + " = " + values + ";", false);
+    }
+    else
+    {
+      vtkShaderProgram::Substitute(
+        fragment, "uniform " + declared + ";", "const " + declared + " = " + values + ";", false);
+    }
   }
 }
 

@@ -72,7 +72,7 @@ public:
 
   /**
    * A float as a GLSL literal that reads back as the same float (nine significant digits,
-   * always with a decimal point or an exponent). Exported for TestPhongLightConstants.
+   * always with a decimal point or an exponent). Exported for TestPhongUniformConstants.
    */
   VTKRENDERINGPHONG_EXPORT static std::string FloatLiteral(float value);
 
@@ -99,7 +99,7 @@ private:
     const std::string& lights, const Plan& plan) const;
   static bool ShadesWithVertexNormal(std::map<vtkShader::Type, vtkShader*>& shaders);
   void SubstituteVertexDots(vtkShader* vertexShader, const Plan& plan) const;
-  static void DeclareLightConstants(std::string& fragment, const Plan& plan);
+  static void DeclareConstants(std::string& fragment, const Plan& plan);
 
   vtkObject* Reporter;
 };

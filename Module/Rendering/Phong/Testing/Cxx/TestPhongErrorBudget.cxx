@@ -186,7 +186,7 @@ struct Outcome
   int SquaredShininess = 0;
   bool Reported = true;   // the mapper's report matches its shader (ReportMatchesShader)
   vtkIdType Excused = 0;  // pixels on a discontinuity of the model (ExcuseDiscontinuities)
-  bool Constants = false; // the second frame took the lights as constants (LIGHT_CONSTANTS)
+  bool Constants = false; // the second frame took the lights as constants (UNIFORM_CONSTANTS)
   // How much further from the double model the picture lies than the exact mode's own
   // picture, at its worst pixel and channel, in levels (0 for the exact mode): what the
   // plan's bound bounds.
@@ -277,7 +277,7 @@ double LargestExcess(vtkImageData* picture, vtkImageData* exact, vtkImageData* r
 // against vtkPhongReference shading the same render's G-buffer in double. Beyond `budget`,
 // the pixels where the exact mode strays as well are excused (ExcuseDiscontinuities). Two
 // frames of the same view are judged: a still scene's second may take the lights as constants
-// (LIGHT_CONSTANTS) and their charge, so both answer to the second's bound, in the first's mode.
+// (UNIFORM_CONSTANTS) and their charge, so both answer to the second's bound, in the first's mode.
 Outcome Measure(vtkPhongTest::Scene& view, vtkActor* actor, double budget)
 {
   vtkNew<vtkPhongFloatRenderPass> pass;
@@ -295,7 +295,7 @@ Outcome Measure(vtkPhongTest::Scene& view, vtkActor* actor, double budget)
   outcome.SquaredShininess = first.SquaredShininess;
   outcome.Reported =
     ReportMatchesShader(first) && ReportMatchesShader(second) && first.Mode == second.Mode;
-  outcome.Constants = second.Signature.find("LIGHT_CONSTANTS") != std::string::npos;
+  outcome.Constants = second.Signature.find("UNIFORM_CONSTANTS") != std::string::npos;
   auto exact = vtkPhongTest::ShadeGBuffer(view, pass, reference);
   vtkSmartPointer<vtkImageData> exactPicture;
   if (budget > 0.0)

@@ -1,6 +1,7 @@
-// Under an error budget, lights whose values come back unchanged go into the fragment shader
-// as constants (LIGHT_CONSTANTS, vtkPhongMapperCore): the same floats as the uniforms, so the
-// picture changes only by the rounding a compiler makes its own way. Checked here:
+// Under an error budget, light and material values that come back unchanged go into the
+// fragment shader as constants (UNIFORM_CONSTANTS, vtkPhongMapperCore): the same floats as the
+// uniforms, so the picture changes only by the rounding a compiler makes its own way. Checked
+// here:
 // - every float written as a literal reads back as the same float;
 // - directional, attenuated point and soft-edged spot lights, and the Phong lobe whose vertex
 //   shader reads the directions as uniforms: the picture with constants is the picture with
@@ -12,18 +13,22 @@
 //   with the camera, and after each new set of values only once they held for twice as many
 //   frames as the time before, and half as many again once they served four times that;
 //   always for camera lights, however the camera turns;
-// - a change of a light's value (a colour) shows in the picture;
+// - the material's values are constants too: the ready-made products, VTK's shininess and
+//   opacity, and a back material's uniforms (a shell seen inside);
+// - a change of a light's or the material's value (a colour) shows in the picture;
 // - a positional camera light, placed from the camera's frame, lights as in world coordinates;
 // - never in the exact mode (budget 0), whose shaders stay those of a mapper without budget.
 
 #include "vtkPhongShaderTemplate.h"
 #include "vtkPhongTestUtilities.h"
+#include "vtkPhongTwoSidedScene.h"
 
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -71,7 +76,49 @@ vtkPhongPolyDataMapper* AddBudgetedSphere(vtkPhongTest::Scene& scene, vtkPropert
 
 bool HasConstants(vtkPhongPolyDataMapper* mapper)
 {
-  return std::string(mapper->GetLastShaderSignature()).find("LIGHT_CONSTANTS") != std::string::npos;
+  return std::string(mapper->GetLastShaderSignature()).find("UNIFORM_CONSTANTS") !=
+    std::string::npos;
+}
+
+// Whether the last fragment shader declares each of `names` as a constant.
+bool DeclaresConstants(
+  vtkPhongPolyDataMapper* mapper, const std::vector<std::string>& names, std::string& missing)
+{
+  const std::string source = mapper->GetLastFragmentShaderSource();
+  missing.clear();
+  for (const std::string& name : names)
+  {
+    if (source.find("const " + name + " = ") == std::string::npos)
+    {
+      missing += " " + name;
+    }
+  }
+  return missing.empty();
+}
+
+// A shell seen inside, with a back material: VTK's uniforms of both sides become constants,
+// and the picture stays the uniforms'.
+void CheckBackMaterial(vtkPhongTest::Checks& checks)
+{
+  vtkPhongTest::Scene scene(160, 160);
+  vtkActor* actor = vtkPhongTest::BuildShellScene(scene);
+  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
+  mapper->SetErrorBudget(1.0);
+  mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
+  scene.Window->Render();
+  auto uniforms = LastFrame(scene.Window);
+  scene.Window->Render();
+  const std::string signature = mapper->GetLastShaderSignature();
+  std::string missing;
+  checks.Expect(HasConstants(mapper) && signature.find("BACK_MATERIAL") != std::string::npos,
+    "a back material takes the constants: " + signature);
+  checks.Expect(DeclaresConstants(mapper,
+                  { "vec3 diffuseColorUniform", "vec3 diffuseColorUniformBF",
+                    "float specularPowerUniformBF", "float opacityUniformBF" },
+                  missing),
+    "both sides' material values as constants; not:" + missing);
+  ExpectSamePicture(checks, uniforms, LastFrame(scene.Window),
+    "the shell's picture with constants against its picture with uniforms");
 }
 
 // Random finite floats of every exponent, and the awkward ones.
@@ -166,11 +213,12 @@ void CheckPhongLobe(vtkPhongTest::Checks& checks)
 }
 }
 
-int TestPhongLightConstants(int, char*[])
+int TestPhongUniformConstants(int, char*[])
 {
   vtkPhongTest::Checks checks;
   CheckLiterals(checks);
   CheckPhongLobe(checks);
+  CheckBackMaterial(checks);
 
   vtkPhongTest::Scene scene(160, 160);
   scene.Renderer->AutomaticLightCreationOff();
@@ -218,6 +266,24 @@ int TestPhongLightConstants(int, char*[])
   RenderFrames(scene.Window, 3);
   checks.Expect(HasConstants(mapper) && mapper->GetShaderCompileCount() == compiles + 1,
     "still frames keep them and build nothing");
+  std::string missing;
+  checks.Expect(
+    DeclaresConstants(mapper,
+      { "vec3 phongDirectionalLightToLightVC[2]", "vec3 phongSpotLightAxisVC[1]",
+        "float phongSpotLightCosInner[1]", "vec3 phongAmbientTerm", "vec3 phongMaterialDiffuse",
+        "vec3 phongMaterialSpecular", "float specularPowerUniform", "float opacityUniform" },
+      missing),
+    "the light and material values as constants; not:" + missing);
+
+  // A material colour change shows and reads the uniforms until it holds.
+  auto still = LastFrame(scene.Window);
+  material->SetDiffuseColor(0.2, 0.3, 1.0);
+  scene.Window->Render();
+  checks.Expect(
+    vtkPhongTest::MaxDifference(still, LastFrame(scene.Window)) > 20 && !HasConstants(mapper),
+    "a new material colour changes the picture and reads the uniforms");
+  material->SetDiffuseColor(0.8, 0.7, 0.6);
+  scene.Window->Render();
 
   // Scene lights turn with the camera: each frame brings other values.
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
