@@ -585,9 +585,8 @@ bool vtkPhongShaderPlanner::MayTakeConstants(const Plan& plan, const Options& op
   const std::size_t lights =
     plan.DirectionalLights.size() + plan.PointLights.size() + plan.SpotLights.size();
   return plan.Handled && !plan.DepthOnly && options.ErrorBudget > 0.0 && options.Specialize &&
-    IsLitLikeFinal(plan.DebugView) &&
-    (plan.Has(Feature::SumsPerFragment) || plan.Has(Feature::DiffusePerFragment)) && lights > 0 &&
-    lights <= 64 && plan.ErrorBound + ConstantsCharge(plan) <= options.ErrorBudget;
+    IsLitLikeFinal(plan.DebugView) && lights > 0 && lights <= 64 &&
+    plan.ErrorBound + ConstantsCharge(plan) <= options.ErrorBudget;
 }
 
 //------------------------------------------------------------------------------

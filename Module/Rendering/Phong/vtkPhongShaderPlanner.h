@@ -66,8 +66,9 @@ public:
   /**
    * Whether the plan's fragment shader may take its light and material values as constants
    * (UNIFORM_CONSTANTS, SetConstants): under an error budget, in the final or BudgetUse
-   * view of the specialized shader, where the fragment shader sums lights (every sum or the
-   * diffuse one), for at most 64 lights (the unrolled loops), and where their charge fits.
+   * view of the specialized shader, with 1 to 64 lights (the unrolled loops), and where their
+   * charge fits. Where the vertices sum the lights, the fragment shader still reads the
+   * material's values.
    */
   static bool MayTakeConstants(const Plan& plan, const Options& options);
 

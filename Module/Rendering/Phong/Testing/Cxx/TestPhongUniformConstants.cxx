@@ -14,7 +14,8 @@
 //   frames as the time before, and half as many again once they served four times that;
 //   always for camera lights, however the camera turns;
 // - the material's values are constants too: the ready-made products, VTK's shininess and
-//   opacity, and a back material's uniforms (a shell seen inside);
+//   opacity, and a back material's uniforms (a shell seen inside); also where every sum is
+//   made per vertex, whose fragment shader reads only the material;
 // - a change of a light's or the material's value (a colour) shows in the picture;
 // - a positional camera light, placed from the camera's frame, lights as in world coordinates;
 // - never in the exact mode (budget 0), whose shaders stay those of a mapper without budget.
@@ -121,6 +122,44 @@ void CheckBackMaterial(vtkPhongTest::Checks& checks)
     "the shell's picture with constants against its picture with uniforms");
 }
 
+// Every sum per vertex (a fine sphere filling a large window, one directional light,
+// Blinn-Phong at n = 30, 3 levels: a bound of about 2 levels): the fragment
+// shader still reads the material, which becomes constants; the lights stay the vertex
+// shader's uniforms.
+void CheckPerVertexMode(vtkPhongTest::Checks& checks)
+{
+  vtkPhongTest::Scene scene(640, 640);
+  scene.Renderer->AutomaticLightCreationOff();
+  const double key[3] = { 1.0, 1.0, 1.5 };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  vtkPhongTest::AddLight(scene, key, origin, white, false);
+  vtkNew<vtkPhongProperty> material;
+  material->SetColor(0.3, 0.6, 0.9);
+  material->SetSpecular(0.5);
+  material->SetShininess(30.0);
+  material->SetLightingModelToBlinnPhong();
+  vtkActor* actor = vtkPhongTest::AddActor(scene, vtkPhongTest::MakeSphere(256), material);
+  auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
+  mapper->SetErrorBudget(3.0);
+  mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
+  scene.LookFromZ(1.6);
+  scene.Window->Render();
+  auto uniforms = LastFrame(scene.Window);
+  scene.Window->Render();
+  const std::string signature = mapper->GetLastShaderSignature();
+  std::string missing;
+  checks.Expect(signature.find("SUMS_PER_VERTEX") != std::string::npos && HasConstants(mapper),
+    "every sum per vertex, with constants: " + signature);
+  checks.Expect(
+    DeclaresConstants(mapper,
+      { "vec3 phongMaterialDiffuse", "vec3 phongMaterialSpecular", "float opacityUniform" },
+      missing),
+    "per vertex, the material's values as constants; not:" + missing);
+  ExpectSamePicture(checks, uniforms, LastFrame(scene.Window),
+    "per vertex, the picture with constants against the picture with uniforms");
+}
+
 // Random finite floats of every exponent, and the awkward ones.
 void CheckLiterals(vtkPhongTest::Checks& checks)
 {
@@ -219,6 +258,7 @@ int TestPhongUniformConstants(int, char*[])
   CheckLiterals(checks);
   CheckPhongLobe(checks);
   CheckBackMaterial(checks);
+  CheckPerVertexMode(checks);
 
   vtkPhongTest::Scene scene(160, 160);
   scene.Renderer->AutomaticLightCreationOff();
