@@ -1096,7 +1096,7 @@ void PlannerCost(
 }
 
 // The mode a vtkPhong mapper's last plan chose under its error budget, in a word, and "+c"
-// where its fragment shader took the lights as constants.
+// where its fragment shader took the light and material values as constants.
 std::string BudgetMode(vtkPhongPolyDataMapper* mapper)
 {
   const bool constants =
@@ -1121,7 +1121,7 @@ std::string BudgetMode(vtkPhongPolyDataMapper* mapper)
 // the kinds section's light sets of 1 and 8 lights; the materials of that section, Blinn-Phong
 // for vtkPhong. Each budget's column: ms, the mode it chose (fragment: every sum per fragment,
 // the lobe by squaring where that fits; specular: the specular sums per vertex; vertex:
-// every sum; +c: the lights as constants) and its bound in levels.
+// every sum; +c: the light and material values as constants) and its bound in levels.
 void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
 {
   const int width = quick ? 320 : 1280, height = quick ? 256 : 1024;
@@ -1184,8 +1184,8 @@ void BudgetSection(const std::vector<std::string>& meshFiles, bool quick)
   }
   std::printf("(each budget: ms, mode, bound in levels; fragment = every sum per fragment, "
               "the lobe by squaring where its rounding fits, specular = the specular sums per "
-              "vertex and the diffuse per fragment, vertex = every sum per vertex, +c = the "
-              "lights as constants in the fragment shader; ratios: "
+              "vertex and the diffuse per fragment, vertex = every sum per vertex, +c = the light "
+              "and material values as constants in the fragment shader; ratios: "
               "budget 1 to stock and to exact, 0.5 to exact, 3 to stock)\n");
   PlannerCost(meshes, quick);
 }

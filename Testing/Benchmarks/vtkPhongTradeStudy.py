@@ -273,7 +273,7 @@ def read_csv(path, integers, reals):
 
 def budget_mode(mapper):
     """The mode the mapper's last plan chose under its budget, whether it squared the lobe and
-    whether its fragment shader took the lights as constants."""
+    whether its fragment shader took the light and material values as constants."""
     constants = "UNIFORM_CONSTANTS" in mapper.GetLastShaderSignature()
     return (mapper.GetBudgetModeAsString() + (", squared" if mapper.GetSquaredShininess() else "")
             + (", constants" if constants else ""))
@@ -350,7 +350,7 @@ def budget_report(rows):
              "budget of B adds at most B to the exact mode's largest error. Mode: where the",
              "light sums went (per fragment, the specular sums per vertex, every sum per",
              "vertex; \"squared\": the whole shininess raised by squaring; \"constants\": the",
-             "lights' values written into the fragment shader, from the second frame of a still",
+             "light and material values written into the fragment shader, from the second frame of a still",
              "scene); bound: what the",
              "mapper spent of the budget (levels). The eight lights include point and spot",
              "lights, which no per-vertex bound covers yet. This section alone:",

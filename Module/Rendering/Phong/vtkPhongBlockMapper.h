@@ -71,6 +71,7 @@ protected:
   /// The blocks in the buffer, the composite mapper's settings (vtkPhongLightingMapper).
   vtkPhongLightingSettings* LightingSettings() override;
   std::vector<vtkPolyData*> LitBlocks() override;
+  bool MaterialPerBlock() override { return true; }
   bool BlocksInBuffer(std::vector<vtkPhongBufferBlock>& blocks) override;
   bool VisibilityWorkAllowed() override;
   int ClippingPlanesSeen() override;

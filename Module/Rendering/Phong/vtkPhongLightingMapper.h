@@ -83,7 +83,8 @@ protected:
    * say). VisibilityWorkAllowed: false where the colours forbid culling and the pre-pass.
    * ClippingPlanesSeen, HasSelection: what may open a closed surface. SurfaceBounds: the
    * model bounds the camera must see from outside. Reporter: the object errors name (the
-   * mapper the user made). StockNeedToRebuildShaders: VTK's test.
+   * mapper the user made). StockNeedToRebuildShaders: VTK's test. MaterialPerBlock: whether
+   * VTK sets its material uniforms (colours, opacity) again for each block it draws.
    */
   virtual vtkPhongLightingSettings* LightingSettings() = 0;
   virtual std::vector<vtkPolyData*> LitBlocks() = 0;
@@ -94,6 +95,7 @@ protected:
   virtual void SurfaceBounds(double bounds[6]) = 0;
   virtual vtkObject* Reporter() { return this; }
   virtual bool StockNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act);
+  virtual bool MaterialPerBlock() { return false; }
   ///@}
 
   /**

@@ -140,6 +140,7 @@ bool vtkPhongLightingMapper<Base>::GetNeedToRebuildShaders(
   state.DrawingVertices = this->DrawingVertices;
   state.DrawingSelection = this->DrawingSelection;
   state.HasUserShaderCode = vtkPhongShaderCode::HasUserCode(act, this->LegacyShaders());
+  state.MaterialPerBlock = this->MaterialPerBlock();
 
   vtkPhongLightingSettings* settings = this->LightingSettings();
   core->Options.DebugView = settings->GetDebugView();

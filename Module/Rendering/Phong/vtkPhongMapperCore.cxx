@@ -126,7 +126,7 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
   placeholders.Spot = internal.PlaceholderSpot;
   vtkPhongShaderPlan plan =
     vtkPhongShaderPlanner(placeholders, internal.Log).MakePlan(ren, act, state, this->Options);
-  this->TakeSteadyConstants(cellBO, ren, plan);
+  this->TakeSteadyConstants(cellBO, ren, state, plan);
   if (plan.Handled && this->Internal->FailedSignatures.count(plan.Signature))
   {
     plan = vtkPhongShaderPlan();
@@ -155,8 +155,8 @@ bool vtkPhongMapperCore::PlanPrimitive(const vtkOpenGLHelper& cellBO, vtkRendere
 // served several times the repeats they waited for, soon stop where they did not, and draw
 // with the uniforms' program meanwhile. A program with constants that failed to compile is
 // not taken again.
-void vtkPhongMapperCore::TakeSteadyConstants(
-  const vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkPhongShaderPlan& plan)
+void vtkPhongMapperCore::TakeSteadyConstants(const vtkOpenGLHelper& cellBO, vtkRenderer* ren,
+  const vtkPhongPrimitiveState& state, vtkPhongShaderPlan& plan)
 {
   Internals& internal = *this->Internal;
   if (!vtkPhongShaderPlanner::MayTakeConstants(plan, this->Options))
@@ -164,7 +164,9 @@ void vtkPhongMapperCore::TakeSteadyConstants(
     return; // (the depth pre-pass plans the same primitive: its count goes on)
   }
   vtkPhongUniformValues values = vtkPhongLightUniforms(nullptr, ren, plan, internal.Log).Values();
-  vtkPhongUniformValues material = vtkPhongMaterialUniforms(nullptr, plan, internal.Log).Values();
+  // VTK's material uniforms stay uniforms where VTK sets them per block.
+  vtkPhongUniformValues material =
+    vtkPhongMaterialUniforms(nullptr, plan, internal.Log).Values(!state.MaterialPerBlock);
   values.insert(values.end(), material.begin(), material.end());
   Internals::SteadyValues& steady = internal.Steady[&cellBO];
   if (values == steady.Values)

@@ -157,8 +157,8 @@ protected:
   ~vtkPhongMapperCore() override;
 
 private:
-  void TakeSteadyConstants(
-    const vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkPhongShaderPlan& plan);
+  void TakeSteadyConstants(const vtkOpenGLHelper& cellBO, vtkRenderer* ren,
+    const vtkPhongPrimitiveState& state, vtkPhongShaderPlan& plan);
   static bool Compiles(std::map<vtkShader::Type, vtkShader*>& shaders, vtkRenderer* ren);
   void FallBackToVTK(const vtkOpenGLHelper* cellBO, vtkObject* reporter);
   static void KeepUserLightOutput(vtkShader* fragment, vtkActor* act);

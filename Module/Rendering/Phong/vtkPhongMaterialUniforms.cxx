@@ -31,15 +31,21 @@ void vtkPhongMaterialUniforms::Upload()
 }
 
 //------------------------------------------------------------------------------
-vtkPhongUniformValues vtkPhongMaterialUniforms::Values()
+vtkPhongUniformValues vtkPhongMaterialUniforms::Values(bool withVTKUniforms)
 {
   vtkPhongUniformValues values;
-  this->AddSide(this->ThePlan.FrontMaterial, "", true, values);
+  if (withVTKUniforms)
+  {
+    this->AddSide(this->ThePlan.FrontMaterial, "", true, values);
+  }
   this->AddProducts(values);
   // VTK declares back-face uniforms when the actor has a back property; with one-sided
   // lighting the contract uses the front material on both faces.
-  this->AddSide(this->ThePlan.BackMaterial, "BF",
-    this->ThePlan.BackMaterial != this->ThePlan.FrontMaterial, values);
+  if (withVTKUniforms)
+  {
+    this->AddSide(this->ThePlan.BackMaterial, "BF",
+      this->ThePlan.BackMaterial != this->ThePlan.FrontMaterial, values);
+  }
   return values;
 }
 

@@ -39,6 +39,9 @@ struct vtkPhongPrimitiveState
   bool DrawingEdges = false;      ///< surface with edges: VTK's edge colour is ambientColor
   bool DrawingVertices = false;   ///< the vertex-visibility pass
   bool DrawingSelection = false;  ///< the selection-highlight pass
+  /// VTK sets its material uniforms again for each block it draws (the composite mapper's
+  /// blocks: colours and opacity per block), over those the lighting uploads
+  bool MaterialPerBlock = false;
   /// the triangles binned for the error budget's per-vertex bound; null without a budget
   vtkPhongGouraudBound* Triangles = nullptr;
 

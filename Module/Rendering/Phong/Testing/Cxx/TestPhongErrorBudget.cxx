@@ -611,7 +611,7 @@ bool RunRandom(int count, unsigned seed, vtkPolyData* bunny)
   std::cout << count << " random scenes (seed " << seed << "): " << chosen[PerFragment]
             << " per fragment, " << chosen[SpecularPerVertex] << " specular per vertex, "
             << chosen[PerVertex] << " per vertex; " << constants
-            << " with the lights as constants in their second frame; " << excused
+            << " with constants in their second frame; " << excused
             << " pixels excused (the exact mode strays there too)\n";
   if (count >= 20 && constants == 0)
   {

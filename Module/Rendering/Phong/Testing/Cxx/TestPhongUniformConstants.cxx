@@ -15,11 +15,15 @@
 //   always for camera lights, however the camera turns;
 // - the material's values are constants too: the ready-made products, VTK's shininess and
 //   opacity, and a back material's uniforms (a shell seen inside); also where every sum is
-//   made per vertex, whose fragment shader reads only the material;
+//   made per vertex, whose fragment shader reads only the material; but not the colours and
+//   opacity VTK sets per block of a composite dataset;
 // - a change of a light's or the material's value (a colour) shows in the picture;
 // - a positional camera light, placed from the camera's frame, lights as in world coordinates;
 // - never in the exact mode (budget 0), whose shaders stay those of a mapper without budget.
 
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongShaderTemplate.h"
 #include "vtkPhongTestUtilities.h"
 #include "vtkPhongTwoSidedScene.h"
@@ -97,6 +101,24 @@ bool DeclaresConstants(
   return missing.empty();
 }
 
+// A fresh mapper's first frame (uniforms) against its second: the second has constants and
+// the plan's `feature`, declares `names` as constants, and draws the first's picture.
+void ExpectConstantsInSecondFrame(vtkPhongTest::Checks& checks, vtkRenderWindow* window,
+  vtkPhongPolyDataMapper* mapper, const std::string& feature, const std::vector<std::string>& names,
+  const std::string& what)
+{
+  window->Render();
+  auto uniforms = LastFrame(window);
+  window->Render();
+  const std::string signature = mapper->GetLastShaderSignature();
+  std::string missing;
+  checks.Expect(HasConstants(mapper) && signature.find(feature) != std::string::npos,
+    what + ": constants and " + feature + " in " + signature);
+  checks.Expect(DeclaresConstants(mapper, names, missing), what + ": not constants:" + missing);
+  ExpectSamePicture(checks, uniforms, LastFrame(window),
+    what + ": the picture with constants against the picture with uniforms");
+}
+
 // A shell seen inside, with a back material: VTK's uniforms of both sides become constants,
 // and the picture stays the uniforms'.
 void CheckBackMaterial(vtkPhongTest::Checks& checks)
@@ -106,20 +128,10 @@ void CheckBackMaterial(vtkPhongTest::Checks& checks)
   auto* mapper = vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper());
   mapper->SetErrorBudget(1.0);
   mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
-  scene.Window->Render();
-  auto uniforms = LastFrame(scene.Window);
-  scene.Window->Render();
-  const std::string signature = mapper->GetLastShaderSignature();
-  std::string missing;
-  checks.Expect(HasConstants(mapper) && signature.find("BACK_MATERIAL") != std::string::npos,
-    "a back material takes the constants: " + signature);
-  checks.Expect(DeclaresConstants(mapper,
-                  { "vec3 diffuseColorUniform", "vec3 diffuseColorUniformBF",
-                    "float specularPowerUniformBF", "float opacityUniformBF" },
-                  missing),
-    "both sides' material values as constants; not:" + missing);
-  ExpectSamePicture(checks, uniforms, LastFrame(scene.Window),
-    "the shell's picture with constants against its picture with uniforms");
+  ExpectConstantsInSecondFrame(checks, scene.Window, mapper, "BACK_MATERIAL",
+    { "vec3 diffuseColorUniform", "vec3 diffuseColorUniformBF", "float specularPowerUniformBF",
+      "float opacityUniformBF" },
+    "a shell with a back material");
 }
 
 // Every sum per vertex (a fine sphere filling a large window, one directional light,
@@ -144,20 +156,57 @@ void CheckPerVertexMode(vtkPhongTest::Checks& checks)
   mapper->SetErrorBudget(3.0);
   mapper->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
   scene.LookFromZ(1.6);
-  scene.Window->Render();
-  auto uniforms = LastFrame(scene.Window);
-  scene.Window->Render();
-  const std::string signature = mapper->GetLastShaderSignature();
-  std::string missing;
-  checks.Expect(signature.find("SUMS_PER_VERTEX") != std::string::npos && HasConstants(mapper),
-    "every sum per vertex, with constants: " + signature);
+  ExpectConstantsInSecondFrame(checks, scene.Window, mapper, "SUMS_PER_VERTEX",
+    { "vec3 phongMaterialDiffuse", "vec3 phongMaterialSpecular", "float opacityUniform" },
+    "every sum per vertex");
+}
+
+// The composite mapper's blocks: VTK sets each block's colour and opacity as uniforms as it
+// draws it, so those stay uniforms; the lights still become constants. Three spheres of
+// three block colours, each keeping its colour in the frames with constants.
+void CheckBlockColors(vtkPhongTest::Checks& checks)
+{
+  vtkPhongTest::Scene scene(300, 120);
+  auto sphere = vtkPhongTest::MakeSphere(24, 0.45);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  vtkNew<vtkPhongCompositePolyDataMapper> mapper;
+  mapper->SetInputDataObject(blocks);
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  mapper->SetCompositeDataDisplayAttributes(attributes);
+  const double colours[3][3] = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
+  for (unsigned int i = 0; i < 3; ++i)
+  {
+    blocks->SetBlock(i, vtkPhongTest::Moved(sphere, (i - 1.0) * 1.0, 0.0, 0.0));
+    attributes->SetBlockColor(blocks->GetBlock(i), colours[i]);
+  }
+  mapper->SetErrorBudget(1.0);
+  mapper->SetDepthPrePass(vtkPhongCompositePolyDataMapper::DepthPrePassOff);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetSpecular(0.3);
+  scene.Renderer->AddActor(actor);
+  scene.LookFromZ(4.5);
+  bool coloured = true;
+  std::string seen;
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    scene.Window->Render();
+    auto image = LastFrame(scene.Window);
+    for (int i = 0; i < 3; ++i)
+    {
+      // Each sphere's centre: its own channel well above the other two.
+      const unsigned char* pixel = vtkPhongTest::PixelAt(image, 150 + (i - 1) * 50, 60);
+      const bool own =
+        pixel[i] > 100 && pixel[(i + 1) % 3] < pixel[i] / 2 && pixel[(i + 2) % 3] < pixel[i] / 2;
+      coloured = coloured && own;
+      seen += " (" + std::to_string(pixel[0]) + "," + std::to_string(pixel[1]) + "," +
+        std::to_string(pixel[2]) + ")";
+    }
+  }
+  checks.Expect(coloured, "the blocks keep their colours, frame after frame:" + seen);
   checks.Expect(
-    DeclaresConstants(mapper,
-      { "vec3 phongMaterialDiffuse", "vec3 phongMaterialSpecular", "float opacityUniform" },
-      missing),
-    "per vertex, the material's values as constants; not:" + missing);
-  ExpectSamePicture(checks, uniforms, LastFrame(scene.Window),
-    "per vertex, the picture with constants against the picture with uniforms");
+    std::string(mapper->GetLastShaderSignature()).find("UNIFORM_CONSTANTS") != std::string::npos,
+    "the composite mapper's lights as constants: " + std::string(mapper->GetLastShaderSignature()));
 }
 
 // Random finite floats of every exponent, and the awkward ones.
@@ -259,6 +308,7 @@ int TestPhongUniformConstants(int, char*[])
   CheckPhongLobe(checks);
   CheckBackMaterial(checks);
   CheckPerVertexMode(checks);
+  CheckBlockColors(checks);
 
   vtkPhongTest::Scene scene(160, 160);
   scene.Renderer->AutomaticLightCreationOff();
