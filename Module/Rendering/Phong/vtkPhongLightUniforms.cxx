@@ -18,6 +18,7 @@
 namespace
 {
 using Feature = vtkPhongFeature;
+using Source = vtkPhongUniformValue::Source;
 
 const char* LightKindName(vtkLight* light)
 {
@@ -230,7 +231,7 @@ void vtkPhongLightUniforms::AddAmbient(vtkPhongUniformValues& out) const
   float term[3];
   vtkPhongMaterial::FiniteProduct(
     material->GetAmbient(), material->GetAmbientColor(), this->AmbientLight, term);
-  out.push_back(vtkPhongUniformValue::Vec3("phongAmbientTerm", term));
+  out.push_back(vtkPhongUniformValue::Vec3("phongAmbientTerm", term, Source::Material));
 }
 
 //------------------------------------------------------------------------------
@@ -382,18 +383,18 @@ void vtkPhongLightUniforms::AddEmission(vtkPhongUniformValues& out)
       }
       return emission;
     };
-    out.push_back(
-      vtkPhongUniformValue::Vec3("phongEmission", emissionOf(plan.FrontMaterial, "front").data()));
+    out.push_back(vtkPhongUniformValue::Vec3(
+      "phongEmission", emissionOf(plan.FrontMaterial, "front").data(), Source::Material));
     if (plan.Has(Feature::BackMaterial))
     {
       out.push_back(vtkPhongUniformValue::Vec3(
-        "phongEmissionBF", emissionOf(plan.BackMaterial, "back").data()));
+        "phongEmissionBF", emissionOf(plan.BackMaterial, "back").data(), Source::Material));
     }
   }
   if (plan.Has(Feature::TwoSided))
   {
     const double shininess = vtkPhongMaterial::ShininessOf(plan.BackMaterial);
     out.push_back(vtkPhongUniformValue::Float("phongShininessBF",
-      static_cast<float>(std::min(shininess, vtkPhongProblemLog::LargestValue))));
+      static_cast<float>(std::min(shininess, vtkPhongProblemLog::LargestValue)), Source::Material));
   }
 }

@@ -17,6 +17,7 @@
 #include "vtkShaderProgram.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLShaderProperty.h"
@@ -163,11 +164,7 @@ void vtkPhongMapperCore::TakeSteadyConstants(const vtkOpenGLHelper& cellBO, vtkR
   {
     return; // (the depth pre-pass plans the same primitive: its count goes on)
   }
-  vtkPhongUniformValues values = vtkPhongLightUniforms(nullptr, ren, plan, internal.Log).Values();
-  // VTK's material uniforms stay uniforms where VTK sets them per block.
-  vtkPhongUniformValues material =
-    vtkPhongMaterialUniforms(nullptr, plan, internal.Log).Values(!state.MaterialPerBlock);
-  values.insert(values.end(), material.begin(), material.end());
+  vtkPhongUniformValues values = this->ConstantCandidates(ren, state, plan);
   Internals::SteadyValues& steady = internal.Steady[&cellBO];
   if (values == steady.Values)
   {
@@ -199,6 +196,50 @@ void vtkPhongMapperCore::TakeSteadyConstants(const vtkOpenGLHelper& cellBO, vtkR
   {
     plan = std::move(withConstants);
   }
+}
+
+//------------------------------------------------------------------------------
+// The values that may become constants. The lights' make a program that every actor of the
+// same structure shares; the material's make one of the actor's own. Those are taken only in
+// renderers drawing at most MaterialConstantsActors visible actors: each program costs a compile
+// and llvmpipe's JIT (about 60 ms), and 50 actors of 50 colours stalled their second frame 3 s
+// where one program served them all. VTK's own material uniforms are left out where VTK sets
+// them again per block (the composite mapper's block colours and opacities).
+vtkPhongUniformValues vtkPhongMapperCore::ConstantCandidates(
+  vtkRenderer* ren, const vtkPhongPrimitiveState& state, const vtkPhongShaderPlan& plan)
+{
+  Internals& internal = *this->Internal;
+  using Source = vtkPhongUniformValue::Source;
+  vtkPhongUniformValues values = vtkPhongLightUniforms(nullptr, ren, plan, internal.Log).Values();
+  const vtkPhongUniformValues material =
+    vtkPhongMaterialUniforms(nullptr, plan, internal.Log).Values();
+  values.insert(values.end(), material.begin(), material.end());
+  const bool ownProgram = FewVisibleActors(ren);
+  values.erase(std::remove_if(values.begin(), values.end(),
+                 [&](const vtkPhongUniformValue& value)
+                 {
+                   return (value.From != Source::Light && !ownProgram) ||
+                     (value.From == Source::StockMaterial && state.MaterialPerBlock);
+                 }),
+    values.end());
+  return values;
+}
+
+//------------------------------------------------------------------------------
+// Whether the renderer draws at most MaterialConstantsActors visible actors (counted up to one
+// more: a few steps per primitive, however many actors there are).
+bool vtkPhongMapperCore::FewVisibleActors(vtkRenderer* ren)
+{
+  vtkActorCollection* actors = ren->GetActors();
+  vtkCollectionSimpleIterator it;
+  int visible = 0;
+  actors->InitTraversal(it);
+  for (vtkActor* actor = actors->GetNextActor(it); actor && visible <= MaterialConstantsActors;
+       actor = actors->GetNextActor(it))
+  {
+    visible += actor->GetVisibility() ? 1 : 0;
+  }
+  return visible <= MaterialConstantsActors;
 }
 
 //------------------------------------------------------------------------------

@@ -159,6 +159,11 @@ protected:
 private:
   void TakeSteadyConstants(const vtkOpenGLHelper& cellBO, vtkRenderer* ren,
     const vtkPhongPrimitiveState& state, vtkPhongShaderPlan& plan);
+  vtkPhongUniformValues ConstantCandidates(
+    vtkRenderer* ren, const vtkPhongPrimitiveState& state, const vtkPhongShaderPlan& plan);
+  static bool FewVisibleActors(vtkRenderer* ren);
+  // The most visible actors a renderer may draw for the material's values to become constants.
+  static constexpr int MaterialConstantsActors = 4;
   static bool Compiles(std::map<vtkShader::Type, vtkShader*>& shaders, vtkRenderer* ren);
   void FallBackToVTK(const vtkOpenGLHelper* cellBO, vtkObject* reporter);
   static void KeepUserLightOutput(vtkShader* fragment, vtkActor* act);

@@ -31,21 +31,15 @@ void vtkPhongMaterialUniforms::Upload()
 }
 
 //------------------------------------------------------------------------------
-vtkPhongUniformValues vtkPhongMaterialUniforms::Values(bool withVTKUniforms)
+vtkPhongUniformValues vtkPhongMaterialUniforms::Values()
 {
   vtkPhongUniformValues values;
-  if (withVTKUniforms)
-  {
-    this->AddSide(this->ThePlan.FrontMaterial, "", true, values);
-  }
+  this->AddSide(this->ThePlan.FrontMaterial, "", true, values);
   this->AddProducts(values);
   // VTK declares back-face uniforms when the actor has a back property; with one-sided
   // lighting the contract uses the front material on both faces.
-  if (withVTKUniforms)
-  {
-    this->AddSide(this->ThePlan.BackMaterial, "BF",
-      this->ThePlan.BackMaterial != this->ThePlan.FrontMaterial, values);
-  }
+  this->AddSide(this->ThePlan.BackMaterial, "BF",
+    this->ThePlan.BackMaterial != this->ThePlan.FrontMaterial, values);
   return values;
 }
 
@@ -84,20 +78,25 @@ void vtkPhongMaterialUniforms::AddSide(
   const float diffuse = this->CheckedCoefficient(material->GetDiffuse(), "diffuse");
   const float specular = this->CheckedCoefficient(material->GetSpecular(), "specular");
   const std::string& side = this->Side;
-  out.push_back(vtkPhongUniformValue::Vec3("ambientColorUniform" + side, ambientColor.data()));
-  out.push_back(vtkPhongUniformValue::Vec3("diffuseColorUniform" + side, diffuseColor.data()));
-  out.push_back(vtkPhongUniformValue::Float("opacityUniform" + side, opacity));
-  out.push_back(vtkPhongUniformValue::Float("ambientIntensity" + side, ambient));
-  out.push_back(vtkPhongUniformValue::Float("diffuseIntensity" + side, diffuse));
+  const auto Stock = vtkPhongUniformValue::Source::StockMaterial;
+  out.push_back(
+    vtkPhongUniformValue::Vec3("ambientColorUniform" + side, ambientColor.data(), Stock));
+  out.push_back(
+    vtkPhongUniformValue::Vec3("diffuseColorUniform" + side, diffuseColor.data(), Stock));
+  out.push_back(vtkPhongUniformValue::Float("opacityUniform" + side, opacity, Stock));
+  out.push_back(vtkPhongUniformValue::Float("ambientIntensity" + side, ambient, Stock));
+  out.push_back(vtkPhongUniformValue::Float("diffuseIntensity" + side, diffuse, Stock));
   if (this->ThePlan.Has(vtkPhongFeature::Specular))
   {
-    out.push_back(vtkPhongUniformValue::Float("specularIntensity" + side, specular));
-    out.push_back(vtkPhongUniformValue::Vec3("specularColorUniform" + side, specularColor.data()));
+    out.push_back(vtkPhongUniformValue::Float("specularIntensity" + side, specular, Stock));
+    out.push_back(
+      vtkPhongUniformValue::Vec3("specularColorUniform" + side, specularColor.data(), Stock));
     out.push_back(vtkPhongUniformValue::Float("specularPowerUniform" + side,
       static_cast<float>(this->Log.Bounded(
         shininess, vtkPhongProblemLog::LargestValue,
         [&](std::ostream& os) { os << "The " << this->SideName << " material's shininess"; },
-        this->Report))));
+        this->Report)),
+      Stock));
   }
 }
 
@@ -153,7 +152,7 @@ void vtkPhongMaterialUniforms::AddProducts(vtkPhongUniformValues& out) const
     const double scales[3] = { scale, scale, scale };
     float value[3];
     vtkPhongMaterial::FiniteProduct(coefficient, color, scales, value);
-    out.push_back(vtkPhongUniformValue::Vec3(name, value));
+    out.push_back(vtkPhongUniformValue::Vec3(name, value, vtkPhongUniformValue::Source::Material));
   };
   product("phongMaterialAmbient", front->GetAmbient(), front->GetAmbientColor(), 1.0);
   product("phongMaterialDiffuse", front->GetDiffuse(), front->GetDiffuseColor(), 1.0);

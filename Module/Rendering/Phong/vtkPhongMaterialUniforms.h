@@ -38,9 +38,8 @@ public:
   void Upload();
 
   /// Every material value of the plan, front side first (the BudgetUse colour aside: it is the
-  /// plan's, not the material's); without VTK's own uniforms (ambientColorUniform, ...) when
-  /// `withVTKUniforms` is false, for where VTK sets them per block.
-  vtkPhongUniformValues Values(bool withVTKUniforms = true);
+  /// plan's, not the material's).
+  vtkPhongUniformValues Values();
 
 private:
   using RGB = std::array<float, 3>;

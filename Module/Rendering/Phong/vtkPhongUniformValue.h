@@ -22,28 +22,40 @@ class vtkShaderProgram;
 
 struct vtkPhongUniformValue
 {
+  /// What a value depends on, which decides whether it may be a constant (vtkPhongMapperCore).
+  enum class Source
+  {
+    Light,        ///< the lights alone: programs with them as constants serve many actors
+    Material,     ///< the actor's material (with or without the lights): the lighting's own
+    StockMaterial ///< the actor's material, in VTK's own uniforms (ambientColorUniform, ...)
+  };
+
   std::string Name;     ///< the GLSL name, e.g. phongDirectionalLightToLightVC
   int Components = 3;   ///< 3: vec3 elements, 1: float elements
   bool IsArray = false; ///< an array of Values.size() / Components elements; else one element
   std::vector<float> Values;
+  Source From = Source::Light;
 
   ///@{
-  /// A single vec3 or float, or an array of them (three floats an element for vec3).
-  static vtkPhongUniformValue Vec3(const std::string& name, const float rgb[3])
+  /// A single vec3 or float, or an array of them (three floats an element for vec3; arrays
+  /// are the lights').
+  static vtkPhongUniformValue Vec3(
+    const std::string& name, const float rgb[3], Source from = Source::Light)
   {
-    return { name, 3, false, { rgb[0], rgb[1], rgb[2] } };
+    return { name, 3, false, { rgb[0], rgb[1], rgb[2] }, from };
   }
-  static vtkPhongUniformValue Float(const std::string& name, float value)
+  static vtkPhongUniformValue Float(
+    const std::string& name, float value, Source from = Source::Light)
   {
-    return { name, 1, false, { value } };
+    return { name, 1, false, { value }, from };
   }
   static vtkPhongUniformValue Vec3Array(const std::string& name, std::vector<float> values)
   {
-    return { name, 3, true, std::move(values) };
+    return { name, 3, true, std::move(values), Source::Light };
   }
   static vtkPhongUniformValue FloatArray(const std::string& name, std::vector<float> values)
   {
-    return { name, 1, true, std::move(values) };
+    return { name, 1, true, std::move(values), Source::Light };
   }
   ///@}
 
@@ -62,7 +74,7 @@ struct vtkPhongUniformValue
   bool operator==(const vtkPhongUniformValue& other) const
   {
     return this->Name == other.Name && this->Components == other.Components &&
-      this->IsArray == other.IsArray && this->Values == other.Values;
+      this->IsArray == other.IsArray && this->Values == other.Values && this->From == other.From;
   }
   bool operator!=(const vtkPhongUniformValue& other) const { return !(*this == other); }
 };

@@ -16,7 +16,8 @@
 // - the material's values are constants too: the ready-made products, VTK's shininess and
 //   opacity, and a back material's uniforms (a shell seen inside); also where every sum is
 //   made per vertex, whose fragment shader reads only the material; but not the colours and
-//   opacity VTK sets per block of a composite dataset;
+//   opacity VTK sets per block of a composite dataset, nor any material value in a renderer
+//   of more than four actors (which share the lights' program instead);
 // - a change of a light's or the material's value (a colour) shows in the picture;
 // - a positional camera light, placed from the camera's frame, lights as in world coordinates;
 // - never in the exact mode (budget 0), whose shaders stay those of a mapper without budget.
@@ -209,6 +210,42 @@ void CheckBlockColors(vtkPhongTest::Checks& checks)
     "the composite mapper's lights as constants: " + std::string(mapper->GetLastShaderSignature()));
 }
 
+// Five actors of five colours: a program of each actor's own would cost five compiles (about
+// 60 ms each on llvmpipe; 50 actors stalled a frame 3 s), so the material stays uniforms and
+// the lights' constants make one program they share.
+void CheckManyActors(vtkPhongTest::Checks& checks)
+{
+  vtkPhongTest::Scene scene(200, 80);
+  std::vector<vtkPhongPolyDataMapper*> mappers;
+  auto sphere = vtkPhongTest::MakeSphere(24, 0.4);
+  for (int i = 0; i < 5; ++i)
+  {
+    vtkNew<vtkPhongProperty> material;
+    material->SetColor(0.2 * i, 0.5, 1.0 - 0.2 * i);
+    material->SetSpecular(0.4);
+    vtkActor* actor =
+      vtkPhongTest::AddActor(scene, vtkPhongTest::Moved(sphere, i - 2.0, 0.0, 0.0), material);
+    mappers.push_back(vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper()));
+    mappers.back()->SetErrorBudget(1.0);
+    mappers.back()->SetDepthPrePass(vtkPhongPolyDataMapper::DepthPrePassOff);
+  }
+  scene.LookFromZ(9.0);
+  RenderFrames(scene.Window, 2);
+  bool shared = true;
+  for (vtkPhongPolyDataMapper* mapper : mappers)
+  {
+    const std::string source = mapper->GetLastFragmentShaderSource();
+    shared = shared && HasConstants(mapper) &&
+      std::string(mapper->GetLastShaderSignature()) == mappers[0]->GetLastShaderSignature() &&
+      source.find("const vec3 phongDirectionalLightToLightVC[") != std::string::npos &&
+      source.find("uniform vec3 phongMaterialDiffuse;") != std::string::npos;
+  }
+  checks.Expect(shared,
+    "five actors share one program with the lights as constants and the material as "
+    "uniforms: " +
+      std::string(mappers[0]->GetLastShaderSignature()));
+}
+
 // Random finite floats of every exponent, and the awkward ones.
 void CheckLiterals(vtkPhongTest::Checks& checks)
 {
@@ -309,6 +346,7 @@ int TestPhongUniformConstants(int, char*[])
   CheckBackMaterial(checks);
   CheckPerVertexMode(checks);
   CheckBlockColors(checks);
+  CheckManyActors(checks);
 
   vtkPhongTest::Scene scene(160, 160);
   scene.Renderer->AutomaticLightCreationOff();
