@@ -375,6 +375,8 @@ case "$command" in
       "$root/Testing/Benchmarks/vtkPhongProgramMemory.py"
     PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
       "$root/Testing/Benchmarks/vtkPhongDirectionalCost.py"
+    PYTHONPATH="$build/lib/python3/dist-packages" with_display /usr/bin/python3 \
+      "$root/Testing/Benchmarks/vtkPhongManyActors.py" 1 4 5 50 200
     ;;
   bench-growth)
     install_packages
