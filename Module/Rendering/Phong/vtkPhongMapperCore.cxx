@@ -226,8 +226,8 @@ vtkPhongUniformValues vtkPhongMapperCore::ConstantCandidates(
 }
 
 //------------------------------------------------------------------------------
-// Whether the renderer draws at most MaterialConstantsActors visible actors (counted up to one
-// more: a few steps per primitive, however many actors there are).
+// Whether the renderer draws at most MaterialConstantsActors visible actors (the count stops at
+// one more: a busy renderer costs a few steps per primitive, not one per actor).
 bool vtkPhongMapperCore::FewVisibleActors(vtkRenderer* ren)
 {
   vtkActorCollection* actors = ren->GetActors();

@@ -186,7 +186,7 @@ struct Outcome
   int SquaredShininess = 0;
   bool Reported = true;   // the mapper's report matches its shader (ReportMatchesShader)
   vtkIdType Excused = 0;  // pixels on a discontinuity of the model (ExcuseDiscontinuities)
-  bool Constants = false; // the second frame took the lights as constants (UNIFORM_CONSTANTS)
+  bool Constants = false; // the second frame took the constants (UNIFORM_CONSTANTS)
   // How much further from the double model the picture lies than the exact mode's own
   // picture, at its worst pixel and channel, in levels (0 for the exact mode): what the
   // plan's bound bounds.
@@ -276,7 +276,7 @@ double LargestExcess(vtkImageData* picture, vtkImageData* exact, vtkImageData* r
 // What a frame of a scene chose and how far it strayed: the picture, in a float target,
 // against vtkPhongReference shading the same render's G-buffer in double. Beyond `budget`,
 // the pixels where the exact mode strays as well are excused (ExcuseDiscontinuities). Two
-// frames of the same view are judged: a still scene's second may take the lights as constants
+// frames of the same view are judged: a still scene's second may take the constants
 // (UNIFORM_CONSTANTS) and their charge, so both answer to the second's bound, in the first's mode.
 Outcome Measure(vtkPhongTest::Scene& view, vtkActor* actor, double budget)
 {
@@ -333,7 +333,7 @@ Outcome Measure(vtkPhongTest::Scene& view, vtkActor* actor, double budget)
 // (blue per fragment, green the specular sums per vertex, orange every sum per vertex) at a
 // brightness from 0.25 (nothing of the budget spent) to 1 (all of it). Checked on each
 // case's frame, in a float target: every covered pixel the colour its mode and bound give.
-// The bound is the drawn plan's: from a still scene's second frame on, the lights as constants
+// The bound is the drawn plan's: from a still scene's second frame on, the constants
 // add their charge to what the case's first frame spent.
 bool ShowsBudgetUse(vtkPhongTest::Scene& view, const Case& c, const Outcome& outcome)
 {
@@ -615,7 +615,7 @@ bool RunRandom(int count, unsigned seed, vtkPolyData* bunny)
             << " pixels excused (the exact mode strays there too)\n";
   if (count >= 20 && constants == 0)
   {
-    std::cerr << "no random scene took the lights as constants\n";
+    std::cerr << "no random scene took the constants\n";
     ok = false;
   }
   // A long sweep must reach both per-vertex modes (about 1 and 5 scenes in 100 take them;
