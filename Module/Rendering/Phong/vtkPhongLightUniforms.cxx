@@ -9,7 +9,6 @@
 #include "vtkPhongMaterial.h"
 #include "vtkPhongProblemLog.h"
 #include "vtkPhongProperty.h"
-#include "vtkShaderProgram.h"
 #include "vtkTransform.h"
 
 #include <algorithm>
@@ -223,9 +222,7 @@ void vtkPhongLightUniforms::AddAmbient(vtkPhongUniformValues& out) const
   {
     return;
   }
-  const float light[3] = { static_cast<float>(this->AmbientLight[0]),
-    static_cast<float>(this->AmbientLight[1]), static_cast<float>(this->AmbientLight[2]) };
-  out.push_back(vtkPhongUniformValue::Vec3("phongAmbientLight", light));
+  out.push_back(vtkPhongUniformValue::Vec3("phongAmbientLight", this->AmbientLight));
   // The material's values as vtkPhongMaterialUniforms checks (and reports) them.
   vtkProperty* material = this->ThePlan.FrontMaterial;
   float term[3];
@@ -384,11 +381,11 @@ void vtkPhongLightUniforms::AddEmission(vtkPhongUniformValues& out)
       return emission;
     };
     out.push_back(vtkPhongUniformValue::Vec3(
-      "phongEmission", emissionOf(plan.FrontMaterial, "front").data(), Source::Material));
+      "phongEmission", emissionOf(plan.FrontMaterial, "front"), Source::Material));
     if (plan.Has(Feature::BackMaterial))
     {
       out.push_back(vtkPhongUniformValue::Vec3(
-        "phongEmissionBF", emissionOf(plan.BackMaterial, "back").data(), Source::Material));
+        "phongEmissionBF", emissionOf(plan.BackMaterial, "back"), Source::Material));
     }
   }
   if (plan.Has(Feature::TwoSided))

@@ -4,7 +4,6 @@
 #include "vtkPhongProblemLog.h"
 #include "vtkPhongProperty.h"
 #include "vtkProperty.h"
-#include "vtkShaderProgram.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,8 +23,7 @@ void vtkPhongMaterialUniforms::Upload()
   vtkPhongUniformValues values = this->Values();
   if (this->ThePlan.Has(vtkPhongFeature::DebugBudget))
   {
-    values.push_back(
-      vtkPhongUniformValue::Vec3("phongBudgetUse", BudgetUseColor(this->ThePlan).data()));
+    values.push_back(vtkPhongUniformValue::Vec3("phongBudgetUse", BudgetUseColor(this->ThePlan)));
   }
   vtkPhongUniformValue::Upload(this->Program, values);
 }
@@ -79,18 +77,15 @@ void vtkPhongMaterialUniforms::AddSide(
   const float specular = this->CheckedCoefficient(material->GetSpecular(), "specular");
   const std::string& side = this->Side;
   const auto Stock = vtkPhongUniformValue::Source::StockMaterial;
-  out.push_back(
-    vtkPhongUniformValue::Vec3("ambientColorUniform" + side, ambientColor.data(), Stock));
-  out.push_back(
-    vtkPhongUniformValue::Vec3("diffuseColorUniform" + side, diffuseColor.data(), Stock));
+  out.push_back(vtkPhongUniformValue::Vec3("ambientColorUniform" + side, ambientColor, Stock));
+  out.push_back(vtkPhongUniformValue::Vec3("diffuseColorUniform" + side, diffuseColor, Stock));
   out.push_back(vtkPhongUniformValue::Float("opacityUniform" + side, opacity, Stock));
   out.push_back(vtkPhongUniformValue::Float("ambientIntensity" + side, ambient, Stock));
   out.push_back(vtkPhongUniformValue::Float("diffuseIntensity" + side, diffuse, Stock));
   if (this->ThePlan.Has(vtkPhongFeature::Specular))
   {
     out.push_back(vtkPhongUniformValue::Float("specularIntensity" + side, specular, Stock));
-    out.push_back(
-      vtkPhongUniformValue::Vec3("specularColorUniform" + side, specularColor.data(), Stock));
+    out.push_back(vtkPhongUniformValue::Vec3("specularColorUniform" + side, specularColor, Stock));
     out.push_back(vtkPhongUniformValue::Float("specularPowerUniform" + side,
       static_cast<float>(this->Log.Bounded(
         shininess, vtkPhongProblemLog::LargestValue,

@@ -39,10 +39,13 @@ struct vtkPhongUniformValue
   ///@{
   /// A single vec3 or float, or an array of them (three floats an element for vec3; arrays
   /// are the lights').
+  template <typename RGB> // float[3], double[3], std::array<float, 3>, ...
   static vtkPhongUniformValue Vec3(
-    const std::string& name, const float rgb[3], Source from = Source::Light)
+    const std::string& name, const RGB& rgb, Source from = Source::Light)
   {
-    return { name, 3, false, { rgb[0], rgb[1], rgb[2] }, from };
+    return { name, 3, false,
+      { static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]) },
+      from };
   }
   static vtkPhongUniformValue Float(
     const std::string& name, float value, Source from = Source::Light)
