@@ -300,14 +300,8 @@ void CheckPhongLobe(vtkPhongTest::Checks& checks)
   material->SetShininess(40.0);
   material->SetLightingModelToPhong();
   vtkPhongPolyDataMapper* mapper = AddBudgetedSphere(scene, material);
-  scene.Window->Render();
-  auto uniforms = LastFrame(scene.Window);
-  scene.Window->Render();
-  const std::string signature = mapper->GetLastShaderSignature();
-  checks.Expect(signature.find("INTERPOLATED_DOTS") != std::string::npos && HasConstants(mapper),
-    "the Phong lobe: dots from the vertices and constants: " + signature);
-  ExpectSamePicture(checks, uniforms, LastFrame(scene.Window),
-    "the Phong lobe's picture with constants against its picture with uniforms");
+  ExpectConstantsInSecondFrame(checks, scene.Window, mapper, "INTERPOLATED_DOTS",
+    { "vec3 phongDirectionalLightDiffuse[2]" }, "the Phong lobe, dots from the vertices");
 
   // Shininess 40.5 is not squared: the constants add their own charge, 0.01 level and more
   // (a light's new colour: a frame with the uniforms, then one with the constants); a budget
