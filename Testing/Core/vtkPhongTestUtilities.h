@@ -219,18 +219,24 @@ inline vtkSmartPointer<vtkTexture> MakeCheckerTexture(
   return texture;
 }
 
-inline vtkActor* AddActor(Scene& scene, vtkPolyData* mesh, vtkProperty* property = nullptr)
+// `actor`: one of the caller's class (a vtkFollower, a vtkLODActor); null, a new vtkActor.
+inline vtkActor* AddActor(
+  Scene& scene, vtkPolyData* mesh, vtkProperty* property = nullptr, vtkActor* actor = nullptr)
 {
   vtkNew<vtkPhongPolyDataMapper> mapper;
   mapper->SetInputData(mesh);
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
+  vtkSmartPointer<vtkActor> added = actor;
+  if (!added)
+  {
+    added = vtkSmartPointer<vtkActor>::New();
+  }
+  added->SetMapper(mapper);
   if (property)
   {
-    actor->SetProperty(property);
+    added->SetProperty(property);
   }
-  scene.Renderer->AddActor(actor);
-  return actor;
+  scene.Renderer->AddActor(added);
+  return added; // the renderer holds it
 }
 
 // A coarse sphere (12 x 12) lit by a key light at 45 degrees with a sharp

@@ -99,13 +99,13 @@ Vector ToModel(vtkMatrix4x4* viewToModel, const double directionVC[3])
 
 //------------------------------------------------------------------------------
 vtkPhongErrorBudget::Mode vtkPhongErrorBudget::ChooseMode(vtkRenderer* ren, vtkActor* actor,
-  const vtkPhongShaderPlan& plan, vtkPhongGouraudBound& triangles, double available, Mode last,
-  bool squared, double& bound)
+  const vtkPhongShaderPlan& plan, vtkPhongGouraudBound& triangles, const double boundsWC[6],
+  double available, Mode last, bool squared, double& bound)
 {
   bound = 0.0;
   vtkPhongGouraudBound::Scene scene;
   if (!plan.SpotLights.empty() || !MakeScene(ren, actor, plan, scene) ||
-    !PerVertexIsCheaper(ren, actor, triangles, scene.TwoSided))
+    !PerVertexIsCheaper(ren, boundsWC, triangles, scene.TwoSided))
   {
     return Mode::PerFragment;
   }
@@ -243,18 +243,17 @@ bool vtkPhongErrorBudget::AddPointLights(vtkRenderer* ren, const vtkPhongShaderP
 // Per-vertex lighting costs vertices x sides x lights, per-fragment lighting fragments x
 // lights; a vertex-light-side is taken to cost twice a fragment-light (an estimate: the
 // crossover near 2 pixels a triangle). The fragments are taken as the screen area of the
-// actor's bounding sphere, within the viewport, so sub-pixel meshes stay per fragment.
+// surface's bounding sphere, within the viewport, so sub-pixel meshes stay per fragment.
 bool vtkPhongErrorBudget::PerVertexIsCheaper(
-  vtkRenderer* ren, vtkActor* actor, const vtkPhongGouraudBound& triangles, bool twoSided)
+  vtkRenderer* ren, const double boundsWC[6], const vtkPhongGouraudBound& triangles, bool twoSided)
 {
-  const double* bounds = actor->GetBounds();
   vtkCamera* camera = ren->GetActiveCamera();
   int* size = ren->GetSize();
-  if (!bounds || !vtkMath::AreBoundsInitialized(bounds) || size[1] <= 0)
+  if (!vtkMath::AreBoundsInitialized(boundsWC) || size[1] <= 0)
   {
     return false;
   }
-  const vtkBoundingBox box(bounds);
+  const vtkBoundingBox box(boundsWC);
   double centre[3];
   box.GetCenter(centre);
   const double radius = 0.5 * box.GetDiagonalLength();

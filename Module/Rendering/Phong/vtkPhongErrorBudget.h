@@ -37,12 +37,13 @@ public:
 
   /**
    * The cheapest mode of the plan's light sums within `available` (linear colour), given the
-   * primitive's binned triangles, `last`, the last choice, and whether per fragment the lobes
-   * would be raised by squaring (`squared`, WholePowerError); `bound` receives the chosen
-   * mode's bound (0 per fragment).
+   * primitive's binned triangles and their bounds in world coordinates, `last`, the last
+   * choice, and whether per fragment the lobes would be raised by squaring (`squared`,
+   * WholePowerError); `bound` receives the chosen mode's bound (0 per fragment).
    */
   static Mode ChooseMode(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
-    vtkPhongGouraudBound& triangles, double available, Mode last, bool squared, double& bound);
+    vtkPhongGouraudBound& triangles, const double boundsWC[6], double available, Mode last,
+    bool squared, double& bound);
 
   /**
    * How far the picture may stray (linear colour) when the plan's lights raise their lobes to
@@ -88,8 +89,8 @@ private:
   // 20 or more where per fragment the lobes would be squared.
   static bool SpecularPerVertexPays(const vtkPhongGouraudBound::Scene& scene, bool squared);
   // Whether per-vertex lighting costs less: vertices x sides against the covered fragments.
-  static bool PerVertexIsCheaper(
-    vtkRenderer* ren, vtkActor* actor, const vtkPhongGouraudBound& triangles, bool twoSided);
+  static bool PerVertexIsCheaper(vtkRenderer* ren, const double boundsWC[6],
+    const vtkPhongGouraudBound& triangles, bool twoSided);
 };
 
 #endif

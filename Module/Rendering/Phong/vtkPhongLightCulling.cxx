@@ -1,6 +1,5 @@
 #include "vtkPhongLightCulling.h"
 
-#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -135,13 +134,13 @@ double SpotFactorBound(vtkLight* light, const double positionVC[3], const double
 }
 
 //------------------------------------------------------------------------------
-int vtkPhongLightCulling::Cull(vtkRenderer* ren, vtkActor* actor, vtkProperty* front,
+int vtkPhongLightCulling::Cull(vtkRenderer* ren, const double boundsWC[6], vtkProperty* front,
   vtkProperty* back, double bound, std::vector<vtkLight*>& points, std::vector<vtkLight*>& spots,
   double& spent)
 {
   spent = 0.0;
   double boxVC[6];
-  if (!(bound > 0.0) || (points.empty() && spots.empty()) || !ActorBoxVC(ren, actor, boxVC))
+  if (!(bound > 0.0) || (points.empty() && spots.empty()) || !BoxInView(ren, boundsWC, boxVC))
   {
     return 0;
   }
@@ -274,11 +273,11 @@ void vtkPhongLightCulling::MaterialWeights(
 }
 
 //------------------------------------------------------------------------------
-// The actor's bounds in view coordinates: the box around its eight corners.
-bool vtkPhongLightCulling::ActorBoxVC(vtkRenderer* ren, vtkActor* actor, double boxVC[6])
+// World bounds in view coordinates: the box around their eight corners.
+bool vtkPhongLightCulling::BoxInView(vtkRenderer* ren, const double boundsWC[6], double boxVC[6])
 {
-  const double* bounds = actor->GetBounds();
-  if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
+  const double* bounds = boundsWC;
+  if (!vtkMath::AreBoundsInitialized(bounds))
   {
     return false;
   }

@@ -31,7 +31,6 @@
 
 #include <vector> // for std::vector
 
-class vtkActor;
 class vtkLight;
 class vtkProperty;
 class vtkRenderer;
@@ -40,13 +39,14 @@ class vtkPhongLightCulling
 {
 public:
   /**
-   * The actor's colour can change by at most `bound` (per channel, linear, before any
-   * clamping) when the lights left out of `points` and `spots` are dropped. `front` and
-   * `back` are the materials lighting uses (the same when there is no back material).
-   * Returns how many lights were dropped, and in `spent` the sum of their bounds (how much
-   * of `bound` the culling used); bound <= 0 (or NaN) drops none.
+   * The colour of what lies within `boundsWC` (world coordinates) can change by at most
+   * `bound` (per channel, linear, before any clamping) when the lights left out of `points`
+   * and `spots` are dropped. `front` and `back` are the materials lighting uses (the same
+   * when there is no back material). Returns how many lights were dropped, and in `spent` the
+   * sum of their bounds (how much of `bound` the culling used); bound <= 0 (or NaN), or
+   * uninitialized bounds, drop none.
    */
-  static int Cull(vtkRenderer* ren, vtkActor* actor, vtkProperty* front, vtkProperty* back,
+  static int Cull(vtkRenderer* ren, const double boundsWC[6], vtkProperty* front, vtkProperty* back,
     double bound, std::vector<vtkLight*>& points, std::vector<vtkLight*>& spots, double& spent);
 
   /**
@@ -72,7 +72,7 @@ public:
   static bool IsAttenuated(vtkLight* light);
 
 private:
-  static bool ActorBoxVC(vtkRenderer* ren, vtkActor* actor, double boxVC[6]);
+  static bool BoxInView(vtkRenderer* ren, const double boundsWC[6], double boxVC[6]);
 };
 
 #endif

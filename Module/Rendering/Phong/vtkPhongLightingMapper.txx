@@ -125,7 +125,8 @@ bool vtkPhongLightingMapper<Base>::GetNeedToRebuildShaders(
   state.HasPointNormals = this->VBOs->GetNumberOfComponents("normalMC") == 3;
   state.HasCellNormals = this->HaveCellNormals;
   // Every block in the buffer: their normals share it.
-  for (vtkPolyData* block : this->LitBlocks())
+  const std::vector<vtkPolyData*> blocks = this->LitBlocks();
+  for (vtkPolyData* block : blocks)
   {
     vtkDataArray* normals = state.HasPointNormals ? block->GetPointData()->GetNormals()
       : state.HasCellNormals                      ? block->GetCellData()->GetNormals()
@@ -133,6 +134,7 @@ bool vtkPhongLightingMapper<Base>::GetNeedToRebuildShaders(
     state.NormalsMayBeInvalid =
       state.NormalsMayBeInvalid || (normals && core->HasUnusableVectors(normals));
   }
+  vtkPhongMapperCore::BoundsInWorld(blocks, act, state.BoundsWC);
   state.NormalsFromShape = this->DrawingTubesOrSpheres(cellBO, act);
   state.DrawingEdges = this->DrawingEdges(ren, act);
   state.HasGeometryShader = state.DrawingEdges || this->HaveWideLines(ren, act) ||
@@ -152,7 +154,7 @@ bool vtkPhongLightingMapper<Base>::GetNeedToRebuildShaders(
   if (core->Options.ErrorBudget > 0.0 && &cellBO == &this->Primitives[Base::PrimitiveTris] &&
     state.HasPointNormals)
   {
-    this->Internal->Triangles.Update(this->LitBlocks(), this->VBOBuildTime.GetMTime());
+    this->Internal->Triangles.Update(blocks, this->VBOBuildTime.GetMTime());
     state.Triangles = &this->Internal->Triangles;
   }
   core->Options.SpecularAntiAliasing = settings->GetSpecularAntiAliasing();

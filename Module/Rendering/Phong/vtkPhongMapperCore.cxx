@@ -18,9 +18,12 @@
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkBoundingBox.h"
+#include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLShaderProperty.h"
+#include "vtkPolyData.h"
 #include "vtkRenderer.h"
 #include "vtkWeakPointer.h"
 
@@ -240,6 +243,34 @@ bool vtkPhongMapperCore::FewVisibleActors(vtkRenderer* ren)
     visible += actor->GetVisibility() ? 1 : 0;
   }
   return visible <= MaterialConstantsActors;
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongMapperCore::BoundsInWorld(
+  const std::vector<vtkPolyData*>& blocks, vtkActor* act, double boundsWC[6])
+{
+  vtkBoundingBox boxMC;
+  for (vtkPolyData* block : blocks)
+  {
+    boxMC.AddBounds(block->GetBounds());
+  }
+  vtkBoundingBox boxWC;
+  if (boxMC.IsValid())
+  {
+    vtkMatrix4x4* modelToWorld = act->GetMatrix();
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const double pointMC[4] = { boxMC.GetBound(corner & 1),
+        boxMC.GetBound(2 + ((corner >> 1) & 1)), boxMC.GetBound(4 + ((corner >> 2) & 1)), 1.0 };
+      double pointWC[4];
+      modelToWorld->MultiplyPoint(pointMC, pointWC);
+      if (pointWC[3] != 0.0)
+      {
+        boxWC.AddPoint(pointWC[0] / pointWC[3], pointWC[1] / pointWC[3], pointWC[2] / pointWC[3]);
+      }
+    }
+  }
+  boxWC.GetBounds(boundsWC);
 }
 
 //------------------------------------------------------------------------------

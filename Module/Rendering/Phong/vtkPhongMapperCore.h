@@ -29,10 +29,12 @@
 #include <map>        // for std::map
 #include <memory>     // for std::unique_ptr
 #include <string>     // for std::string
+#include <vector>     // for std::vector
 
 class vtkActor;
 class vtkDataArray;
 class vtkOpenGLHelper;
+class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProgram;
 
@@ -109,6 +111,14 @@ public:
    * once per change (not every frame).
    */
   void ReportProblems(vtkObject* reporter);
+
+  /**
+   * The box around `blocks` in world coordinates (the eight corners of their model box
+   * through `act`'s matrix), for vtkPhongPrimitiveState::BoundsWC; uninitialized (min > max)
+   * when they bound nothing.
+   */
+  static void BoundsInWorld(
+    const std::vector<vtkPolyData*>& blocks, vtkActor* act, double boundsWC[6]);
 
   /**
    * Whether a normals array holds zero, NaN or infinite vectors, or vectors too short or too

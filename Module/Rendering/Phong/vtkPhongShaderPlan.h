@@ -44,6 +44,11 @@ struct vtkPhongPrimitiveState
   bool MaterialPerBlock = false;
   /// the triangles binned for the error budget's per-vertex bound; null without a budget
   vtkPhongGouraudBound* Triangles = nullptr;
+  /// What this primitive draws (its blocks) in world coordinates, through the matrix of the
+  /// actor the mapper is given: not that actor's own bounds, which an actor drawing through an
+  /// internal one (vtkFollower, vtkLODActor, ParaView's vtkPVLODActor) hands over without a
+  /// mapper, so without bounds. Uninitialized (min > max) when there is nothing to bound.
+  double BoundsWC[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
 
   /// Whether the shading normal is VTK's interpolated point normal: point normals, and no cell
   /// normals, impostors, geometry shader or shader code of the user's that may change it.

@@ -159,7 +159,7 @@ vtkPhongShaderPlanner::Plan vtkPhongShaderPlanner::MakePlan(
     const double cullingBound = options.ErrorBudget > 0.0
       ? std::min(options.LightCullingBound, 0.5 * options.ErrorBudget)
       : options.LightCullingBound;
-    plan.CulledLights = vtkPhongLightCulling::Cull(ren, actor, plan.FrontMaterial,
+    plan.CulledLights = vtkPhongLightCulling::Cull(ren, state.BoundsWC, plan.FrontMaterial,
       plan.BackMaterial, cullingBound, plan.PointLights, plan.SpotLights, plan.ErrorBound);
   }
 
@@ -423,7 +423,7 @@ vtkPhongGouraudBound::Mode vtkPhongShaderPlanner::BudgetChoosesMode(vtkRenderer*
   // Per fragment, would the lobes be squared? Then the specular sums per vertex pay only for
   // many lobes (vtkPhongErrorBudget::ChooseMode).
   double bound = 0.0;
-  triangles->Chosen = vtkPhongErrorBudget::ChooseMode(ren, actor, plan, *triangles,
+  triangles->Chosen = vtkPhongErrorBudget::ChooseMode(ren, actor, plan, *triangles, state.BoundsWC,
     options.ErrorBudget - plan.ErrorBound, triangles->Chosen, squaring.Fits(plan, options), bound);
   plan.ErrorBound += bound;
   return triangles->Chosen;

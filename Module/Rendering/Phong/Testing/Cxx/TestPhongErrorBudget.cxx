@@ -12,6 +12,7 @@
 // decision thresholds (--orbit FRAMES, default 120): every frame within its budget, no
 // exception. `./vtkphong.sh budget-sweep` runs 1000 random scenes.
 #include "vtkPhongReferenceTesting.h"
+#include "vtkPhongTestActors.h"
 #include "vtkPhongTestTorus.h"
 
 #include "vtkActorCollection.h"
@@ -70,6 +71,7 @@ struct Case
   bool OneSided = false;  // the renderer's two-sided lighting off
   double Specular = 0.5;
   bool Attenuated = false; // the point light's attenuation (1, 0.5, 0), not VTK's default
+  vtkPhongTest::ActorKind Actor = vtkPhongTest::ActorKind::Plain;
 };
 
 // The case's actor: one mesh through vtkPhongPolyDataMapper, or the mesh and a small sphere
@@ -79,7 +81,7 @@ vtkActor* AddSurface(vtkPhongTest::Scene& view, const Case& c, vtkPolyData* mesh
 {
   if (!c.Composite)
   {
-    vtkActor* actor = vtkPhongTest::AddActor(view, mesh);
+    vtkActor* actor = vtkPhongTest::AddActor(view, mesh, nullptr, vtkPhongTest::MakeActor(c.Actor));
     vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper())->SetErrorBudget(c.Budget);
     return actor;
   }
@@ -90,7 +92,7 @@ vtkActor* AddSurface(vtkPhongTest::Scene& view, const Case& c, vtkPolyData* mesh
   vtkNew<vtkPhongCompositePolyDataMapper> mapper;
   mapper->SetInputDataObject(blocks);
   mapper->SetErrorBudget(c.Budget);
-  vtkNew<vtkActor> actor;
+  vtkSmartPointer<vtkActor> actor = vtkPhongTest::MakeActor(c.Actor);
   actor->SetMapper(mapper);
   view.Renderer->AddActor(actor);
   return actor;
@@ -1095,6 +1097,15 @@ int TestPhongErrorBudget(int argc, char* argv[])
       true, true, 3.0, PerVertex, true },
     { "composite, two blocks, sphere 128, 3 lights, Blinn 40.5, 2 levels", 128, 600, 3, false, 40.5,
       true, true, 2.0, SpecularPerVertex, true },
+    // Actors that hand the mapper an internal actor without bounds (vedo's meshes are
+    // vtkFollowers, ParaView's vtkPVLODActors) decide as a vtkActor does.
+    { "a vtkFollower, sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0, true,
+      true, 3.0, PerVertex, false, false, 0.5, false, vtkPhongTest::ActorKind::Follower },
+    { "a vtkLODActor, sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0, true,
+      true, 3.0, PerVertex, false, false, 0.5, false, vtkPhongTest::ActorKind::LOD },
+    { "a vtkFollower, composite, sphere 128, 3 lights, Blinn 40.5, 2 levels", 128, 600, 3, false,
+      40.5, true, true, 2.0, SpecularPerVertex, true, false, 0.5, false,
+      vtkPhongTest::ActorKind::Follower },
     { "bunny00, computed normals, 3 lights, Blinn 40, 2 levels", 0, 600, 3, false, 40.0, true,
       false, 2.0, PerFragment },
     // The scan's noisy normals make the bound 125 levels: only a huge budget goes per vertex,

@@ -19,6 +19,7 @@
 #include "vtkMath.h"
 #include "vtkPhongLightCulling.h"
 #include "vtkPhongLightGeometry.h"
+#include "vtkPhongTestActors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -201,7 +202,7 @@ struct CullingScene
   std::vector<vtkPhongPolyDataMapper*> Mappers;
   std::vector<vtkLight*> Lights;
 
-  CullingScene()
+  explicit CullingScene(vtkPhongTest::ActorKind kind = vtkPhongTest::ActorKind::Plain)
   {
     this->View.Renderer->AutomaticLightCreationOff();
     vtkNew<vtkPhongProperty> material;
@@ -214,8 +215,8 @@ struct CullingScene
     {
       // Spheres of radius 1.5 on a 2 x 2 grid, Spacing apart.
       const double center[3] = { (i % 2 - 0.5) * Spacing, (i / 2 - 0.5) * Spacing, 0.0 };
-      vtkActor* actor =
-        vtkPhongTest::AddActor(this->View, vtkPhongTest::MakeSphere(48, 1.5), material);
+      vtkActor* actor = vtkPhongTest::AddActor(
+        this->View, vtkPhongTest::MakeSphere(48, 1.5), material, vtkPhongTest::MakeActor(kind));
       actor->SetPosition(center[0], center[1], center[2]);
       this->Mappers.push_back(vtkPhongPolyDataMapper::SafeDownCast(actor->GetMapper()));
       // 16 point lights close in front of each: two rings 0.3 off the surface.
@@ -317,6 +318,22 @@ int TestPhongLightCulling(int, char*[])
     checks.Expect(LargestDifference(withSpot, withSpotCulled) <= DefaultBound + 1.0e-6,
       "with the spot: culled within 0.5/255 of unculled");
     scene.View.Renderer->RemoveLight(spot);
+  }
+
+  // Actors that draw through an internal one without bounds (vedo's vtkFollowers, ParaView's
+  // vtkPVLODActors) cull as a vtkActor does.
+  scene.Render(DefaultBound);
+  for (auto kind : { vtkPhongTest::ActorKind::Follower, vtkPhongTest::ActorKind::LOD })
+  {
+    CullingScene wrapped(kind);
+    wrapped.Render(DefaultBound);
+    for (size_t i = 0; i < scene.Mappers.size(); ++i)
+    {
+      const int culled = wrapped.Mappers[i]->GetNumberOfCulledLights();
+      checks.Expect(culled > 0 && culled == scene.Mappers[i]->GetNumberOfCulledLights(),
+        std::string(vtkPhongTest::ActorKindName(kind)) + ", sphere " + std::to_string(i) +
+          ": culls as a vtkActor (" + std::to_string(culled) + " lights culled)");
+    }
   }
 
   // The variant cache: the same frame again, and a far light moved a little, compile nothing.
