@@ -4,8 +4,8 @@
 
 draws SCENE off screen (400x300, fixed camera), writes its screenshot to OUT.png and prints
 one line per actor, "mapper: CLASS" (the polydata mapper inside a vtkDataSetMapper after
-'>'), and for VTK's composite mapper "delegator: CLASS", the block drawer VTK's factory hands
-it. Nothing here names vtkPhong: the driver runs this file once as it is and once after
+'>'), "budget: MODE" where that mapper has an error budget's mode, and for VTK's composite
+mapper "delegator: CLASS", the block drawer VTK's factory hands it. Nothing here names vtkPhong: the driver runs this file once as it is and once after
 `import vtkphong.overrides`.
 """
 
@@ -123,13 +123,23 @@ def no_lights():
     return pl
 
 
+def scalars():
+    """A finer sphere coloured by a scalar, smooth_shading=True, the default light kit."""
+    mesh = pv.Sphere(radius=1.0, theta_resolution=96, phi_resolution=96)
+    mesh["z"] = mesh.points[:, 2]
+    pl = pv.Plotter(off_screen=True, window_size=SIZE)
+    pl.add_mesh(mesh, scalars="z", cmap="viridis", smooth_shading=True, specular=0.2,
+                show_scalar_bar=False)
+    return pl
+
+
 SCENES = {f.__name__: f for f in (smooth_light_kit, airplane_flat, positional_spot_lights,
                                   multiblock, shadows, ssao, points_as_spheres, edges,
-                                  lighting_off, no_lights)}
+                                  lighting_off, no_lights, scalars)}
 
 
 def report(renderer):
-    """The class of every actor's mapper, as the driver reads it."""
+    """The class of every actor's mapper (and its budget's mode), as the driver reads it."""
     from vtkmodules.vtkCommonCore import vtkObjectFactory
     composite = False
     for actor in renderer.actors.values():
@@ -142,6 +152,9 @@ def report(renderer):
             name += ">" + inner.GetClassName()
         composite |= mapper.IsA("vtkCompositePolyDataMapper") == 1
         print("mapper: " + name)
+        drawer = inner if inner is not None else mapper
+        if hasattr(drawer, "GetBudgetModeAsString"):
+            print("budget: " + drawer.GetBudgetModeAsString())
     if composite:
         made = vtkObjectFactory.CreateInstance("vtkCompositePolyDataMapperDelegator")
         print("delegator: " + (made.GetClassName() if made is not None else "none"))
@@ -152,6 +165,7 @@ def main():
     pl = SCENES[scene]()
     pl.camera_position = CAMERA
     pl.show(auto_close=False)
+    pl.render()  # a second frame: what a program settles on after its first
     pl.screenshot(png)
     report(pl.renderer)
     pl.close()

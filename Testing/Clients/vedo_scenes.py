@@ -3,8 +3,9 @@
     python3 vedo_scenes.py SCENE OUT.png
 
 draws SCENE off screen (400x300, fixed camera), writes its screenshot to OUT.png and prints
-one line per actor, "mapper: CLASS". Nothing here names vtkPhong: the driver runs this file
-once as it is and once after `import vtkphong.overrides`.
+one line per actor, "mapper: CLASS" (and "budget: MODE" where the mapper has an error
+budget's mode). Nothing here names vtkPhong: the driver runs this file as it is and after
+`import vtkphong.overrides`.
 """
 
 import sys
@@ -58,18 +59,36 @@ def flat():
     return [vedo.Sphere(r=1.0, res=10, quads=False).c("orchid").flat()]
 
 
+def scalars():
+    """A sphere coloured by a scalar (.cmap), vedo's default lighting."""
+    mesh = vedo.Sphere(r=1.0, res=64)
+    points = mesh.vertices  # a property from vedo 2024 on, a method before
+    mesh.cmap("viridis", np.asarray(points() if callable(points) else points)[:, 2])
+    return [mesh]
+
+
 SCENES = {f.__name__: f for f in (default_look, glossy, shiny_phong, light, point_cloud,
-                                  edges, flat)}
+                                  edges, flat, scalars)}
+
+
+def report(renderer):
+    """The class of every actor's mapper, and its error budget's mode where it has one."""
+    for actor in renderer.GetActors():
+        mapper = actor.GetMapper()
+        if mapper is None:
+            continue
+        print("mapper: " + mapper.GetClassName())
+        if hasattr(mapper, "GetBudgetModeAsString"):
+            print("budget: " + mapper.GetBudgetModeAsString())
 
 
 def main():
     scene, png = sys.argv[1], sys.argv[2]
     plt = vedo.Plotter(offscreen=True, size=SIZE)
     plt.show(*SCENES[scene](), camera=dict(CAMERA), interactive=False)
+    plt.render()  # a second frame: what a program settles on after its first
     plt.screenshot(png)
-    for actor in plt.renderer.GetActors():
-        if actor.GetMapper() is not None:
-            print("mapper: " + actor.GetMapper().GetClassName())
+    report(plt.renderer)
     plt.close()
 
 
