@@ -124,12 +124,12 @@ def no_lights():
 
 
 def scalars():
-    """A finer sphere coloured by a scalar, smooth_shading=True, the default light kit."""
-    mesh = pv.Sphere(radius=1.0, theta_resolution=96, phi_resolution=96)
+    """A finer sphere coloured by a scalar, smooth_shading=True, PyVista's default light kit
+    and material (no specular)."""
+    mesh = pv.Sphere(radius=1.0, theta_resolution=128, phi_resolution=128)
     mesh["z"] = mesh.points[:, 2]
     pl = pv.Plotter(off_screen=True, window_size=SIZE)
-    pl.add_mesh(mesh, scalars="z", cmap="viridis", smooth_shading=True, specular=0.2,
-                show_scalar_bar=False)
+    pl.add_mesh(mesh, scalars="z", cmap="viridis", smooth_shading=True, show_scalar_bar=False)
     return pl
 
 
