@@ -22,7 +22,9 @@ directional, a point and a spot light. Checks, each failing with "ERROR:":
 6. nested contours drawn with the depth pre-pass on: used, and the same picture as without;
 7. "Error Budget" is accepted on every rank, and at 3 levels every pixel stays within 3
    levels (and 8-bit rounding) of the exact picture (this scene's point and spot lights keep
-   it per fragment: only light culling may spend the budget);
+   it per fragment: only light culling may spend the budget); under the key light alone and
+   32 levels the sphere is lit at its vertices ("UsedBudgetMode" 2, pvbatch) and stays within
+   32 levels of its exact picture;
 8. "Specular Anti-Aliasing" changes a highlight narrower than a pixel, and off gives the
    exact picture back.
 """
@@ -87,6 +89,7 @@ def add_lights(view):
     spot.Position = [0.4, 1.5, 1.5]
     spot.FocalPoint = [0.15, 0.1, 0.3]
     spot.Intensity = 0.6
+    return key, point, spot
 
 
 def check_back_face_culling(display, view, ranks, culled_picture, out, server):
@@ -120,12 +123,43 @@ def check_error_budget(display, view, ranks, exact_picture, out):
     path = os.path.join(out, "PhongParaView-%dranks-budget.png" % ranks)
     SaveScreenshot(path, view, ImageResolution=list(SIZE))
     _, _, _, budget_picture = read_png(path)
-    largest = max(max(abs(x - y) for x, y in zip(a, b))
-                  for a, b in zip(budget_picture, exact_picture))
+    largest = largest_difference(budget_picture, exact_picture)
     print("error budget 3 levels: largest difference %d levels" % largest)
     if len(budget_picture) != len(exact_picture) or largest > 4:
         fail("under an error budget of 3 levels a pixel moved by %d levels" % largest)
     display.ErrorBudget = 0.0
+
+
+def largest_difference(a, b):
+    return max(max(abs(x - y) for x, y in zip(p, q)) for p, q in zip(a, b))
+
+
+def check_budget_per_vertex(display, view, lights, ranks, out, server):
+    """7: under the key light alone and a budget of 32 levels the sphere's light sums go per
+    vertex (pvbatch reads the mode; through a pvserver only the pictures are checked), and the
+    picture stays within the budget (and 8-bit rounding) of the exact one."""
+    for light in lights[1:]:
+        light.Enable = 0
+    pictures = []
+    for levels in (0.0, 32.0):
+        display.ErrorBudget = levels
+        Render(view)
+        Render(view)  # the budget's constants come with the second frame
+        path = os.path.join(out, "PhongParaView-%dranks-keylight-budget%g.png" % (ranks, levels))
+        SaveScreenshot(path, view, ImageResolution=list(SIZE))
+        pictures.append(read_png(path)[3])
+    display.UpdatePropertyInformation()
+    mode = display.GetPropertyValue("UsedBudgetMode")
+    largest = largest_difference(*pictures)
+    print("key light alone, error budget 32 levels: mode %s, largest difference %d levels"
+          % (mode, largest))
+    if not server and mode != 2:
+        fail("under the key light and 32 levels the sums stayed %s, not per vertex (2)" % mode)
+    if len(pictures[0]) != len(pictures[1]) or largest > 33:
+        fail("under an error budget of 32 levels a pixel moved by %d levels" % largest)
+    display.ErrorBudget = 0.0
+    for light in lights[1:]:
+        light.Enable = 1
 
 
 def check_specular_anti_aliasing(display, view, ranks, out):
@@ -207,7 +241,7 @@ def main():
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 1.0, 0.0]
     view.CameraViewAngle = 30.0
-    add_lights(view)
+    lights = add_lights(view)
 
     display = Show(owners, view)
     available = display.Representation.Available
@@ -245,6 +279,7 @@ def main():
             fail("%d pixels differ from the serial baseline %s" % (differing, args.baseline))
     check_back_face_culling(display, view, ranks, picture, args.out, args.server)
     check_error_budget(display, view, ranks, picture, args.out)
+    check_budget_per_vertex(display, view, lights, ranks, args.out, args.server)
     check_specular_anti_aliasing(display, view, ranks, args.out)
 
     # 3: each rank's piece in its own colour (red rank 0, blue rank 1, ...).

@@ -46,8 +46,8 @@ struct vtkPhongPrimitiveState
   vtkPhongGouraudBound* Triangles = nullptr;
   /// What this primitive draws (its blocks) in world coordinates, through the matrix of the
   /// actor the mapper is given: not that actor's own bounds, which an actor drawing through an
-  /// internal one (vtkFollower, vtkLODActor, ParaView's vtkPVLODActor) hands over without a
-  /// mapper, so without bounds. Uninitialized (min > max) when there is nothing to bound.
+  /// internal one (vtkFollower, vtkLODActor) hands over without a mapper, so without
+  /// bounds. Uninitialized (min > max) when there is nothing to bound.
   double BoundsWC[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
 
   /// Whether the shading normal is VTK's interpolated point normal: point normals, and no cell

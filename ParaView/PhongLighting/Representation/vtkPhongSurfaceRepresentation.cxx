@@ -277,6 +277,12 @@ void vtkPhongSurfaceRepresentation::SetLightingWithoutLights(int on)
 }
 
 //------------------------------------------------------------------------------
+int vtkPhongSurfaceRepresentation::GetUsedBudgetMode()
+{
+  return vtkPhongCompositePolyDataMapper::SafeDownCast(this->Mapper)->GetBudgetMode();
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongSurfaceRepresentation::SetClosedSurfaceCulling(int cull)
 {
   this->LightingSettings->SetClosedSurfaceCulling(cull != 0);

@@ -97,6 +97,13 @@ public:
   void SetLightingWithoutLights(int on);
 
   /**
+   * Where the last render's light sums went under the error budget, the most approximate of
+   * the blocks' modes (vtkPhongLightingSettings::BudgetModes: 0 per fragment, 1 the specular
+   * sums per vertex, 2 every sum per vertex).
+   */
+  int GetUsedBudgetMode();
+
+  /**
    * Culling of the hidden back faces of closed surfaces seen from outside
    * (vtkPhongLightingSettings::SetClosedSurfaceCulling; default on, the picture is the
    * same) and whether the last render culled them (1) or not (0): a piece of a surface split

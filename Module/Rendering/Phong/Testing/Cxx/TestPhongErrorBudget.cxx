@@ -1097,8 +1097,8 @@ int TestPhongErrorBudget(int argc, char* argv[])
       true, true, 3.0, PerVertex, true },
     { "composite, two blocks, sphere 128, 3 lights, Blinn 40.5, 2 levels", 128, 600, 3, false, 40.5,
       true, true, 2.0, SpecularPerVertex, true },
-    // Actors that hand the mapper an internal actor without bounds (vedo's meshes are
-    // vtkFollowers, ParaView's vtkPVLODActors) decide as a vtkActor does.
+    // Actors that hand the mapper an internal actor without bounds (vtkFollower: vedo 2023's
+    // meshes; vtkLODActor) decide as a vtkActor does.
     { "a vtkFollower, sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0, true,
       true, 3.0, PerVertex, false, false, 0.5, false, vtkPhongTest::ActorKind::Follower },
     { "a vtkLODActor, sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0, true,

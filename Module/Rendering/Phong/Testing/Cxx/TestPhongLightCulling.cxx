@@ -320,8 +320,8 @@ int TestPhongLightCulling(int, char*[])
     scene.View.Renderer->RemoveLight(spot);
   }
 
-  // Actors that draw through an internal one without bounds (vedo's vtkFollowers, ParaView's
-  // vtkPVLODActors) cull as a vtkActor does.
+  // Actors that draw through an internal one without bounds (vtkFollower: vedo 2023's meshes;
+  // vtkLODActor) cull as a vtkActor does.
   scene.Render(DefaultBound);
   for (auto kind : { vtkPhongTest::ActorKind::Follower, vtkPhongTest::ActorKind::LOD })
   {

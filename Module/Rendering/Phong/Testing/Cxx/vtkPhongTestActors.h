@@ -1,7 +1,7 @@
-// Actors that draw through an internal one: vtkFollower and vtkLODActor (and ParaView's
-// vtkPVLODActor, like them) hand the mapper an actor of their own that has no mapper, so
-// no bounds. TestPhongErrorBudget and TestPhongLightCulling check that the mapper decides
-// for them as for a vtkActor.
+// Actors that draw through an internal one: vtkFollower (vedo 2023's meshes) and vtkLODActor
+// hand the mapper an actor of their own that has no mapper, so no bounds (ParaView's
+// vtkPVLODActor gives its internal actor the mapper). TestPhongErrorBudget and
+// TestPhongLightCulling check that the mapper decides for them as for a vtkActor.
 
 #ifndef vtkPhongTestActors_h
 #define vtkPhongTestActors_h
