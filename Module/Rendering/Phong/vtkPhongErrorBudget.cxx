@@ -153,7 +153,8 @@ double vtkPhongErrorBudget::FloatMargin(const vtkPhongGouraudBound::Scene& scene
   double largest = 0.0;
   for (const auto& light : scene.Lights)
   {
-    largest += light.Diffuse + light.Specular;
+    // A(d) <= 1 / c (c > 0: AddPointLights).
+    largest += (light.Diffuse + light.Specular) / light.AttenuationMC[0];
   }
   return RoundingMargin(largest);
 }
@@ -208,15 +209,24 @@ bool vtkPhongErrorBudget::MakeScene(vtkRenderer* ren, vtkActor* actor,
 }
 
 //------------------------------------------------------------------------------
-// Point lights without attenuation (VTK's default (1, 0, 0); the shader's own test,
-// vtkPhongLightCulling::IsAttenuated): the bound takes no attenuation's curvature, so an
-// attenuated one leaves the scene unbounded (false).
+// Point lights, their attenuation as the shader takes it (vtkPhongLightCulling::
+// UploadedAttenuation) in model units: the view's distances are the model's times the
+// similarity's scale. A constant term of 0 leaves the scene unbounded (false): the
+// attenuation then has no largest value for the float margin (FloatMargin).
 bool vtkPhongErrorBudget::AddPointLights(vtkRenderer* ren, const vtkPhongShaderPlan& plan,
   vtkMatrix4x4* viewToModel, const double weights[3][3], vtkPhongGouraudBound::Scene& scene)
 {
+  // The model's units per view unit: the length of a view axis in model coordinates.
+  const double modelPerView =
+    std::sqrt(viewToModel->GetElement(0, 0) * viewToModel->GetElement(0, 0) +
+      viewToModel->GetElement(1, 0) * viewToModel->GetElement(1, 0) +
+      viewToModel->GetElement(2, 0) * viewToModel->GetElement(2, 0));
+  const double viewPerModel = 1.0 / modelPerView;
   for (vtkLight* light : plan.PointLights)
   {
-    if (vtkPhongLightCulling::IsAttenuated(light))
+    double attenuation[3];
+    vtkPhongLightCulling::UploadedAttenuation(light, attenuation);
+    if (!(attenuation[0] > 0.0) || !std::isfinite(viewPerModel))
     {
       return false;
     }
@@ -234,6 +244,8 @@ bool vtkPhongErrorBudget::AddPointLights(vtkRenderer* ren, const vtkPhongShaderP
     }
     bounded.Diffuse = Strength(weights[1], light->GetDiffuseColor(), light->GetIntensity());
     bounded.Specular = Strength(weights[2], light->GetSpecularColor(), light->GetIntensity());
+    bounded.AttenuationMC = { { attenuation[0], attenuation[1] * viewPerModel,
+      attenuation[2] * viewPerModel * viewPerModel } };
     scene.Lights.push_back(bounded);
   }
   return true;

@@ -82,7 +82,7 @@ private:
     vtkPhongGouraudBound::Scene& scene);
   // The plan's point lights into `scene` (their positions in model coordinates, by
   // `viewToModel`; `weights` the materials' of vtkPhongLightCulling::MaterialWeights); false
-  // for an attenuated one.
+  // for one attenuated without a constant term.
   static bool AddPointLights(vtkRenderer* ren, const vtkPhongShaderPlan& plan,
     vtkMatrix4x4* viewToModel, const double weights[3][3], vtkPhongGouraudBound::Scene& scene);
   // Whether the specular sums alone per vertex save more than they cost: two lobes or more,

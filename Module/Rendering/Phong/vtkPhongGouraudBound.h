@@ -30,7 +30,8 @@
  * largest triangle radius and the ball around its points; Bound() then costs cells x lights
  * per frame and bounds every triangle of a cell at once (the cell's angles widen by its cone,
  * and in perspective by the view vector's cone over the cell's ball). Directional lights and
- * point lights without attenuation are bounded (not spot lights). A perspective view adds
+ * point lights are bounded, attenuated ones with their attenuation's largest value and change
+ * over a triangle (MakeFade); not spot lights. A perspective view adds
  * the view vector's spread over a triangle, from Waldron's identity for the normal and the
  * view vector interpolated together (ViewSpreadBound), and the turn of the lobe's axis by the
  * skew of the interpolated view vector (MakeLocalView); Phong adds that of the reflected
@@ -66,9 +67,12 @@ public:
       std::array<double, 3> ToLightMC; ///< L, from the surface towards the light
       double Diffuse = 0.0;            ///< kd*Cd*Ld*I, the largest over channels and sides
       double Specular = 0.0;           ///< ks*Cs*Ls*I*normalization, likewise
-      /// A point light (no cone, no attenuation) at PositionMC instead of the direction.
+      /// A point light (no cone) at PositionMC instead of the direction.
       bool Positional = false;
       std::array<double, 3> PositionMC = { { 0.0, 0.0, 0.0 } };
+      /// A point light's attenuation 1 / (c + l d + q d^2) at a distance d in model units
+      /// (VTK's coefficients, which take view units, scaled to them); c > 0, l, q >= 0.
+      std::array<double, 3> AttenuationMC = { { 1.0, 0.0, 0.0 } };
       bool operator==(const Light& other) const;
     };
     std::vector<Light> Lights;
@@ -199,7 +203,12 @@ private:
     Vector ToLight = { { 0.0, 0.0, 1.0 } };
     double Spread = 0.0, CosSpread = 1.0, SinSpread = 0.0;
     LocalView Local;
+    /// A point light's attenuation over the cell: its largest value, and how far it can
+    /// differ between two points of one triangle (1 and 0 without attenuation).
+    double Fade = 1.0, FadeChange = 0.0;
   };
+  static bool MakeFade(
+    const Scene::Light& light, const Cell& cell, double distance, LightView& lightView);
   static bool MakeLightView(const Scene::Light& light, const Cell& cell, LightView& lightView);
   static Halfway MakeHalfway(const Scene& scene, const View& view, const LightView& light);
   /// The lobe's exponent n, and what depends on it alone: made once per bound.

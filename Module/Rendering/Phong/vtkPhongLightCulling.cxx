@@ -67,12 +67,8 @@ double DistanceToBox(const double p[3], const double box[6])
 // LargestAttenuation): the largest attenuation at distances >= d, since it falls with d.
 double AttenuationAt(vtkLight* light, double d)
 {
-  const double* values = light->GetAttenuationValues();
   double k[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    k[i] = std::min(LightValue(values[i]), vtkPhongProblemLog::LargestAttenuation);
-  }
+  vtkPhongLightCulling::UploadedAttenuation(light, k);
   return 1.0 / std::max(k[0] + k[1] * d + k[2] * d * d, 1.0e-20);
 }
 
@@ -227,6 +223,16 @@ double vtkPhongLightCulling::ContributionBound(vtkLight* light, bool isSpot,
   const double spot =
     isSpot ? SpotFactorBound(light, lightPositionVC, spotAxisVC, boxVC, nearest) : 1.0;
   return spot == 0.0 ? 0.0 : spot * largest * AttenuationAt(light, nearest);
+}
+
+//------------------------------------------------------------------------------
+void vtkPhongLightCulling::UploadedAttenuation(vtkLight* light, double coefficients[3])
+{
+  const double* values = light->GetAttenuationValues();
+  for (int i = 0; i < 3; ++i)
+  {
+    coefficients[i] = std::min(LightValue(values[i]), vtkPhongProblemLog::LargestAttenuation);
+  }
 }
 
 //------------------------------------------------------------------------------

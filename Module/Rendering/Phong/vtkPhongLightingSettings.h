@@ -188,12 +188,12 @@ public:
    * without the setting. Above 0 the mapper spends the budget where a proven bound shows it
    * fits (docs/lighting-model.md, "Error budget"):
    * - light culling takes at most half of it (and never more than LightCullingBound);
-   * - a surface with point normals under directional lights and point lights without
-   *   attenuation (not spot lights) is lit at its vertices and the sums interpolated (VTK's
-   *   true Gouraud), when the bound on the difference from per-fragment lighting, over every
-   *   triangle and every light, fits what culling left and the mesh's vertices are fewer than
-   *   the fragments it covers (on sub-pixel triangles per-vertex lighting costs more, and the
-   *   mapper keeps per fragment);
+   * - a surface with point normals under directional lights and point lights (attenuated
+   *   ones with a constant term; not spot lights) is lit at its vertices and the sums
+   *   interpolated (VTK's true Gouraud), when the bound on the difference from per-fragment
+   *   lighting, over every triangle and every light, fits what culling left and the mesh's
+   *   vertices are fewer than the fragments it covers (on sub-pixel triangles per-vertex
+   *   lighting costs more, and the mapper keeps per fragment);
    * - a whole shininess from 2 to 1000 is raised by squaring instead of pow, its rounding
    *   charged to the budget.
    * Only in the final view. Each choice is its own cached program.

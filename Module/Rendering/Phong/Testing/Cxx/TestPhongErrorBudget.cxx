@@ -70,7 +70,9 @@ struct Case
   bool Composite = false; // two blocks through vtkPhongCompositePolyDataMapper
   bool OneSided = false;  // the renderer's two-sided lighting off
   double Specular = 0.5;
-  bool Attenuated = false; // the point light's attenuation (1, 0.5, 0), not VTK's default
+  // The point light's attenuation, not VTK's default: 1, (1, 0.5, 0); 2, (0, 1, 0), no
+  // constant term.
+  int Attenuated = 0;
   vtkPhongTest::ActorKind Actor = vtkPhongTest::ActorKind::Plain;
 };
 
@@ -170,7 +172,8 @@ void AddLights(vtkPhongTest::Scene& view, const Case& c)
     light->SetConeAngle(180.0); // a point light, not VTK's default spot of 30 degrees
     if (c.Attenuated)
     {
-      light->SetAttenuationValues(1.0, 0.5, 0.0);
+      light->SetAttenuationValues(
+        c.Attenuated == 1 ? 1.0 : 0.0, c.Attenuated == 1 ? 0.5 : 1.0, 0.0);
     }
   }
 }
@@ -424,9 +427,9 @@ bool RunCase(const Case& c, vtkPolyData* file)
     ok = false;
   }
   // Under a budget a whole shininess from 2 to 1e3 raises the lobe by squaring; never in the
-  // exact mode.
+  // exact mode, nor under an attenuation without a constant term (no largest value to charge).
   const bool whole = c.Budget > 0.0 && c.Specular > 0.0 && c.Shininess >= 2.0 &&
-    c.Shininess <= 1.0e3 && c.Shininess == std::floor(c.Shininess);
+    c.Shininess <= 1.0e3 && c.Shininess == std::floor(c.Shininess) && c.Attenuated != 2;
   if (outcome.SquaredShininess != (whole ? static_cast<int>(c.Shininess) : 0))
   {
     std::cerr << c.Name << ": " << (whole ? "expected" : "unexpected")
@@ -546,6 +549,11 @@ bool RunRandom(int count, unsigned seed, vtkPolyData* bunny)
       vtkLight* positional = vtkPhongTest::AddLight(view, position, origin, white, true);
       positional->SetConeAngle(random() % 2 ? 30.0 : 180.0);
       positional->SetIntensity(0.4);
+      // Attenuated in one case of two (drawn from `extra`: `random`'s draws stay as they were).
+      if (extra() % 2 == 0)
+      {
+        positional->SetAttenuationValues(0.3 + unit(extra), 0.5 * unit(extra), 0.5 * unit(extra));
+      }
     }
     vtkNew<vtkPhongProperty> material;
     material->SetColor(unit(random), unit(random), unit(random));
@@ -1089,8 +1097,14 @@ int TestPhongErrorBudget(int argc, char* argv[])
       40.0, true, false, 6.0, PerVertex },
     { "sphere 128, 2 lights and a point light, Phong 40, 8 levels", 128, 600, 2, true, 40.0, false,
       true, 8.0, PerVertex },
-    { "an attenuated point light: not bounded", 128, 600, 2, true, 40.0, true, true, 3.0,
-      PerFragment, false, false, 0.5, true },
+    // An attenuated point light is bounded with its attenuation's change over a triangle,
+    // where it has a constant term (the largest attenuation bounds the float margin).
+    { "an attenuated point light, 3 levels", 128, 600, 2, true, 40.0, true, true, 3.0, PerFragment,
+      false, false, 0.5, 1 },
+    { "an attenuated point light, perspective, 8 levels", 128, 600, 2, true, 40.0, true, false, 8.0,
+      PerVertex, false, false, 0.5, 1 },
+    { "a point light attenuated without a constant term: not bounded", 128, 600, 2, true, 40.0,
+      true, true, 8.0, PerFragment, false, false, 0.5, 2 },
     { "sphere 128, 3 lights, Blinn 40.5, 1 level: not a whole shininess", 128, 600, 3, false, 40.5,
       true, true, 1.0, PerFragment },
     { "composite, two blocks, sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0,
@@ -1100,11 +1114,11 @@ int TestPhongErrorBudget(int argc, char* argv[])
     // Actors that hand the mapper an internal actor without bounds (vtkFollower: vedo 2023's
     // meshes; vtkLODActor) decide as a vtkActor does.
     { "a vtkFollower, sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0, true,
-      true, 3.0, PerVertex, false, false, 0.5, false, vtkPhongTest::ActorKind::Follower },
+      true, 3.0, PerVertex, false, false, 0.5, 0, vtkPhongTest::ActorKind::Follower },
     { "a vtkLODActor, sphere 128, 3 lights, Blinn 40, 3 levels", 128, 600, 3, false, 40.0, true,
-      true, 3.0, PerVertex, false, false, 0.5, false, vtkPhongTest::ActorKind::LOD },
+      true, 3.0, PerVertex, false, false, 0.5, 0, vtkPhongTest::ActorKind::LOD },
     { "a vtkFollower, composite, sphere 128, 3 lights, Blinn 40.5, 2 levels", 128, 600, 3, false,
-      40.5, true, true, 2.0, SpecularPerVertex, true, false, 0.5, false,
+      40.5, true, true, 2.0, SpecularPerVertex, true, false, 0.5, 0,
       vtkPhongTest::ActorKind::Follower },
     { "bunny00, computed normals, 3 lights, Blinn 40, 2 levels", 0, 600, 3, false, 40.0, true,
       false, 2.0, PerFragment },

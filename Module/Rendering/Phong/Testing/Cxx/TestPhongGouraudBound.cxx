@@ -6,8 +6,8 @@
 // double over a barycentric grid, must not exceed the bound. Also the lobe bound alone on
 // random caps of normals around random halfway vectors, and both modes' bounds on single
 // random triangles, degenerate ones among them (100 000 per lobe, Blinn and Phong, under
-// directional lights and headlights; --triangles N sets the count). Prints how tight the
-// bounds are.
+// directional lights, headlights and point lights, attenuated or not; --triangles N sets the
+// count). Prints how tight the bounds are.
 #include "vtkPhongGouraudBound.h"
 #include "vtkPhongTestTorus.h"
 #include "vtkPhongTestUtilities.h"
@@ -71,12 +71,14 @@ Sums Shade(const Scene& scene, const Vector& n, const Vector& v, const Vector& p
   Sums sums;
   for (const Scene::Light& light : scene.Lights)
   {
-    const Vector l = light.Positional
-      ? Unit({ { light.PositionMC[0] - p[0], light.PositionMC[1] - p[1],
-          light.PositionMC[2] - p[2] } })
-      : light.ToLightMC;
+    const Vector toLight = { { light.PositionMC[0] - p[0], light.PositionMC[1] - p[1],
+      light.PositionMC[2] - p[2] } };
+    const Vector l = light.Positional ? Unit(toLight) : light.ToLightMC;
+    const double d = std::sqrt(Dot(toLight, toLight));
+    const auto& k = light.AttenuationMC;
+    const double fade = light.Positional ? 1.0 / (k[0] + k[1] * d + k[2] * d * d) : 1.0;
     const double nl = Dot(n, l);
-    sums.Diffuse += light.Diffuse * std::max(nl, 0.0);
+    sums.Diffuse += fade * light.Diffuse * std::max(nl, 0.0);
     double c;
     if (scene.Blinn)
     {
@@ -92,7 +94,7 @@ Sums Shade(const Scene& scene, const Vector& n, const Vector& v, const Vector& p
     }
     const double lobe = std::pow(std::min(std::max(c, 0.0), 1.0), scene.Shininess);
     const double gate = scene.SmoothTerminator ? std::max(nl, 0.0) : (nl > 1.0e-4 ? 1.0 : 0.0);
-    sums.Specular += light.Specular * lobe * gate;
+    sums.Specular += fade * light.Specular * lobe * gate;
   }
   return sums;
 }
@@ -217,6 +219,23 @@ Scene::Light RandomLight(std::mt19937& random, std::uniform_real_distribution<do
   light.Diffuse = strength(random);
   light.Specular = strength(random);
   return light;
+}
+
+// In one case of two, each point light of `scene` attenuated, (c, l, q) drawn from `fades` (a
+// generator of their own, so that the scenes' other draws stay those of before): c from 0.05
+// to 2, l and q up to 2 / `size` and 2 / size^2, so that the attenuation changes across the
+// triangles.
+void Attenuate(Scene& scene, std::mt19937& fades, double size)
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (Scene::Light& light : scene.Lights)
+  {
+    if (light.Positional && fades() % 2 == 0)
+    {
+      light.AttenuationMC = { { 0.05 + 1.95 * unit(fades), 2.0 * unit(fades) / size,
+        2.0 * unit(fades) / (size * size) } };
+    }
+  }
 }
 
 // Scene `index` of the sequence; the eye at 2 to 8 times `scale` from `centre`.
@@ -526,15 +545,24 @@ void PrintTriangle(vtkPolyData* triangle, const Scene& scene)
   {
     std::cerr << "  light " << light.ToLightMC[0] << " " << light.ToLightMC[1] << " "
               << light.ToLightMC[2] << " diffuse " << light.Diffuse << " specular "
-              << light.Specular << "\n";
+              << light.Specular;
+    if (light.Positional)
+    {
+      std::cerr << " at " << light.PositionMC[0] << " " << light.PositionMC[1] << " "
+                << light.PositionMC[2] << " attenuation " << light.AttenuationMC[0] << " "
+                << light.AttenuationMC[1] << " " << light.AttenuationMC[2];
+    }
+    std::cerr << "\n";
   }
   std::cerr.precision(6);
 }
 
 // Both modes' bounds on `perLobe` single random triangles for each lobe (Blinn, Phong), each
-// against brute force; at least nine in ten must be bounded (finite).
+// against brute force, point lights attenuated in one case of two (Attenuate); at least nine
+// in ten must be bounded (finite).
 bool CheckRandomTriangles(std::mt19937& random, int perLobe, double& tightest)
 {
+  std::mt19937 fades(20261129);
   vtkNew<vtkPolyData> triangle;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -551,7 +579,8 @@ bool CheckRandomTriangles(std::mt19937& random, int perLobe, double& tightest)
   bool ok = true;
   for (int lobe = 0; lobe < 2; ++lobe)
   {
-    int bounded = 0;
+    int bounded = 0, attenuatedScenes = 0;
+    double tightestAttenuated = 0.0;
     for (int trial = 0; trial < perLobe; ++trial)
     {
       RandomTriangle(random, trial % 8, points, normals);
@@ -562,7 +591,8 @@ bool CheckRandomTriangles(std::mt19937& random, int perLobe, double& tightest)
       normals->GetTuple(0, axis.data());
       const Vector centre = { { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
         0.5 * (bounds[4] + bounds[5]) } };
-      const Scene scene = RandomTriangleScene(random, lobe == 0, axis, centre, size);
+      Scene scene = RandomTriangleScene(random, lobe == 0, axis, centre, size);
+      Attenuate(scene, fades, std::max(size, 1.0e-3));
       vtkPhongGouraudBound bound;
       bound.Update({ triangle.GetPointer() }, 1);
       const vtkPhongGouraudBound::Bounds limit = bound.Bound(scene);
@@ -572,11 +602,16 @@ bool CheckRandomTriangles(std::mt19937& random, int perLobe, double& tightest)
       }
       ++bounded;
       const vtkPhongGouraudBound::Bounds actual = BruteForce(triangle, scene);
+      const bool attenuated = std::any_of(scene.Lights.begin(), scene.Lights.end(),
+        [](const Scene::Light& light) { return light.AttenuationMC[0] != 1.0; });
+      attenuatedScenes += attenuated ? 1 : 0;
       for (int mode = 0; mode < 2; ++mode)
       {
         const double a = mode == 0 ? actual.PerVertex : actual.SpecularPerVertex;
         const double l = mode == 0 ? limit.PerVertex : limit.SpecularPerVertex;
         tightest = l > 1.0e-9 ? std::max(tightest, a / l) : tightest;
+        tightestAttenuated =
+          attenuated && l > 1.0e-9 ? std::max(tightestAttenuated, a / l) : tightestAttenuated;
         if (a > l * (1.0 + 1.0e-9) + 1.0e-12)
         {
           std::cerr << "bound broken on random triangle " << trial << " (shape " << trial % 8
@@ -590,7 +625,9 @@ bool CheckRandomTriangles(std::mt19937& random, int perLobe, double& tightest)
       }
     }
     std::cout << (lobe == 0 ? "Blinn" : "Phong") << ": " << bounded << " of " << perLobe
-              << " random triangles bounded\n";
+              << " random triangles bounded, " << attenuatedScenes
+              << " of them under an attenuated point light (largest actual/bound "
+              << tightestAttenuated << ")\n";
     if (bounded < perLobe * 9 / 10)
     {
       std::cerr << "too few random triangles bounded\n";
@@ -625,6 +662,7 @@ int TestPhongGouraudBound(int argc, char* argv[])
   int bounded = 0, total = 0;
   double tightest = 0.0;
   const double origin[3] = { 0.0, 0.0, 0.0 };
+  std::mt19937 fades(20261130);
   for (int kind = 0; kind < 3; ++kind)
   {
     auto mesh = MakeMesh(kind, random);
@@ -632,7 +670,8 @@ int TestPhongGouraudBound(int argc, char* argv[])
     bound.Update({ mesh.GetPointer() }, 1);
     for (int index = 0; index < 24; ++index)
     {
-      const Scene scene = RandomScene(random, index, origin, 1.0);
+      Scene scene = RandomScene(random, index, origin, 1.0);
+      Attenuate(scene, fades, 1.0);
       ok = CheckScene(mesh, bound, scene, MeshName(kind, index), bounded, total, tightest) && ok;
     }
   }
@@ -655,7 +694,8 @@ int TestPhongGouraudBound(int argc, char* argv[])
     // Blinn and Phong, parallel and perspective, n from 2 to 200, headlights among them.
     for (int index : { 1, 3, 8, 15, 19, 22 })
     {
-      const Scene scene = RandomScene(random, index, centre, 0.5 * box.GetDiagonalLength());
+      Scene scene = RandomScene(random, index, centre, 0.5 * box.GetDiagonalLength());
+      Attenuate(scene, fades, 0.5 * box.GetDiagonalLength());
       ok = CheckScene(mesh, bound, scene, std::string(name) + " scene " + std::to_string(index),
              meshBounded, meshTotal, meshTightest) &&
         ok;
