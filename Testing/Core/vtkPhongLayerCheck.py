@@ -37,6 +37,8 @@ RENDERING_RANKS = {
     "vtkPhongCompatibility": 0, "vtkPhongOpenGL": 0, "vtkPhongProblemLog": 0, "vtkPhongShaderFeatures": 0,
     "vtkPhongLightingSettings": 0, "vtkPhongProperty": 0, "vtkPhongUniformValue": 0,
     "vtkPhongBackgroundTask": 0,
+    # foundation over the problem log: its LargestAttenuation
+    "vtkPhongAttenuation": 0.5,
     # the plan, shared maths, small helpers
     "vtkPhongShaderPlan": 1, "vtkPhongMaterial": 1, "vtkPhongLightGeometry": 1,
     "vtkPhongShaderCode": 1, "vtkPhongBufferBlocks": 1, "vtkPhongScopedCulling": 1,

@@ -8,6 +8,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkPhongAttenuation.h"
 #include "vtkPhongLightCulling.h"
 #include "vtkPhongLightGeometry.h"
 #include "vtkPhongMaterial.h"
@@ -154,7 +155,7 @@ double vtkPhongErrorBudget::FloatMargin(const vtkPhongGouraudBound::Scene& scene
   for (const auto& light : scene.Lights)
   {
     // A(d) <= 1 / c (c > 0: AddPointLights).
-    largest += (light.Diffuse + light.Specular) / light.AttenuationMC[0];
+    largest += (light.Diffuse + light.Specular) / light.AttenuationMC.Coefficients[0];
   }
   return RoundingMargin(largest);
 }
@@ -209,10 +210,10 @@ bool vtkPhongErrorBudget::MakeScene(vtkRenderer* ren, vtkActor* actor,
 }
 
 //------------------------------------------------------------------------------
-// Point lights, their attenuation as the shader takes it (vtkPhongLightCulling::
-// UploadedAttenuation) in model units: the view's distances are the model's times the
-// similarity's scale. A constant term of 0 leaves the scene unbounded (false): the
-// attenuation then has no largest value for the float margin (FloatMargin).
+// Point lights, their attenuation as the shader takes it (vtkPhongAttenuation::Of) in model
+// units: the view's distances are the model's times the similarity's scale. A constant term of 0
+// leaves the scene unbounded (false): the attenuation then has no largest value for the float
+// margin (FloatMargin).
 bool vtkPhongErrorBudget::AddPointLights(vtkRenderer* ren, const vtkPhongShaderPlan& plan,
   vtkMatrix4x4* viewToModel, const double weights[3][3], vtkPhongGouraudBound::Scene& scene)
 {
@@ -224,9 +225,8 @@ bool vtkPhongErrorBudget::AddPointLights(vtkRenderer* ren, const vtkPhongShaderP
   const double viewPerModel = 1.0 / modelPerView;
   for (vtkLight* light : plan.PointLights)
   {
-    double attenuation[3];
-    vtkPhongLightCulling::UploadedAttenuation(light, attenuation);
-    if (!(attenuation[0] > 0.0) || !std::isfinite(viewPerModel))
+    const vtkPhongAttenuation attenuation = vtkPhongAttenuation::Of(light);
+    if (!(attenuation.Coefficients[0] > 0.0) || !std::isfinite(viewPerModel))
     {
       return false;
     }
@@ -244,8 +244,7 @@ bool vtkPhongErrorBudget::AddPointLights(vtkRenderer* ren, const vtkPhongShaderP
     }
     bounded.Diffuse = Strength(weights[1], light->GetDiffuseColor(), light->GetIntensity());
     bounded.Specular = Strength(weights[2], light->GetSpecularColor(), light->GetIntensity());
-    bounded.AttenuationMC = { { attenuation[0], attenuation[1] * viewPerModel,
-      attenuation[2] * viewPerModel * viewPerModel } };
+    bounded.AttenuationMC = attenuation.Scaled(viewPerModel);
     scene.Lights.push_back(bounded);
   }
   return true;

@@ -605,9 +605,8 @@ vtkPhongGouraudBound::Bounds vtkPhongGouraudBound::CellBound(const Cell& cell, c
         term = std::min(
           term + LightSpreadBound(cell.Normals, toLight.Local, cosNear, cosFar, sinFar), cosNear);
       }
-      // Attenuated, a light's sums at the vertices are A_i g_i, at a fragment A g: their
-      // difference is A (sum b_i g_i - g) + sum b_i (A_i - A) g_i, within Fade times the
-      // unattenuated bound plus FadeChange times the largest g_i (Diffuse + Specular).
+      // Attenuated: sum b_i A_i g_i - A g = A (sum b_i g_i - g) + sum b_i (A_i - A) g_i, within
+      // Fade times the unattenuated bound plus FadeChange times the largest g_i.
       diffuse[side] +=
         toLight.Fade * light.Diffuse * term + toLight.FadeChange * (light.Diffuse + light.Specular);
       if (light.Specular > 0.0)
@@ -730,36 +729,13 @@ bool vtkPhongGouraudBound::MakeLightView(
   // arcsine per light and cell (the cosine and sine are the angle's own).
   lightView.Spread = lightView.SinSpread / lightView.CosSpread;
   lightView.Local = MakeLocalSpread(cell.Radius, distance - cell.Reach);
-  return std::isfinite(lightView.Local.Spread) && MakeFade(light, cell, distance, lightView);
-}
-
-//------------------------------------------------------------------------------
-// A(d) = 1 / (c + l d + q d^2) over the cell's ball, d from near = distance - Reach to
-// far = distance + Reach: at most A(near), since the denominator grows with d >= 0. Two
-// points of one triangle lie at most 2 Radius apart, and |A'(d)| = (l + 2 q d) / den(d)^2 is
-// at most (l + 2 q far) / den(near)^2 there, so A differs between them by at most that times
-// 2 Radius (mean value theorem). False where the shader's floor on the denominator (1e-20)
-// could act.
-bool vtkPhongGouraudBound::MakeFade(
-  const Scene::Light& light, const Cell& cell, double distance, LightView& lightView)
-{
-  const auto& k = light.AttenuationMC;
-  lightView.Fade = 1.0;
-  lightView.FadeChange = 0.0;
-  if (k[0] == 1.0 && k[1] == 0.0 && k[2] == 0.0)
-  {
-    return true;
-  }
-  const double nearest = distance - cell.Reach, farthest = distance + cell.Reach;
-  const double denominator = k[0] + k[1] * nearest + k[2] * nearest * nearest;
-  if (!(denominator > 1.0e-15) || !(k[1] >= 0.0) || !(k[2] >= 0.0))
-  {
-    return false;
-  }
-  lightView.Fade = 1.0 / denominator;
+  // The attenuation over the ball: at most its value nearest, and between two points of one
+  // triangle (at most 2 Radius apart) its steepest slope times that (mean value theorem).
+  lightView.Fade = light.AttenuationMC.At(distance - cell.Reach);
   lightView.FadeChange =
-    (k[1] + 2.0 * k[2] * farthest) / (denominator * denominator) * 2.0 * cell.Radius;
-  return std::isfinite(lightView.Fade) && std::isfinite(lightView.FadeChange);
+    light.AttenuationMC.SteepestOver(distance - cell.Reach, distance + cell.Reach) * 2.0 *
+    cell.Radius;
+  return std::isfinite(lightView.Local.Spread) && std::isfinite(lightView.FadeChange);
 }
 
 //------------------------------------------------------------------------------

@@ -31,7 +31,7 @@
  * per frame and bounds every triangle of a cell at once (the cell's angles widen by its cone,
  * and in perspective by the view vector's cone over the cell's ball). Directional lights and
  * point lights are bounded, attenuated ones with their attenuation's largest value and change
- * over a triangle (MakeFade); not spot lights. A perspective view adds
+ * over a triangle (MakeLightView); not spot lights. A perspective view adds
  * the view vector's spread over a triangle, from Waldron's identity for the normal and the
  * view vector interpolated together (ViewSpreadBound), and the turn of the lobe's axis by the
  * skew of the interpolated view vector (MakeLocalView); Phong adds that of the reflected
@@ -45,6 +45,7 @@
 #ifndef vtkPhongGouraudBound_h
 #define vtkPhongGouraudBound_h
 
+#include "vtkPhongAttenuation.h"     // for vtkPhongAttenuation
 #include "vtkRenderingPhongModule.h" // for export macro (vtkPhongBenchmark times Bound)
 #include "vtkType.h"                 // for vtkMTimeType
 
@@ -70,9 +71,9 @@ public:
       /// A point light (no cone) at PositionMC instead of the direction.
       bool Positional = false;
       std::array<double, 3> PositionMC = { { 0.0, 0.0, 0.0 } };
-      /// A point light's attenuation 1 / (c + l d + q d^2) at a distance d in model units
-      /// (VTK's coefficients, which take view units, scaled to them); c > 0, l, q >= 0.
-      std::array<double, 3> AttenuationMC = { { 1.0, 0.0, 0.0 } };
+      /// A point light's attenuation of distances in model units (VTK's coefficients take
+      /// view units: vtkPhongAttenuation::Scaled); c > 0.
+      vtkPhongAttenuation AttenuationMC;
       bool operator==(const Light& other) const;
     };
     std::vector<Light> Lights;
@@ -207,8 +208,6 @@ private:
     /// differ between two points of one triangle (1 and 0 without attenuation).
     double Fade = 1.0, FadeChange = 0.0;
   };
-  static bool MakeFade(
-    const Scene::Light& light, const Cell& cell, double distance, LightView& lightView);
   static bool MakeLightView(const Scene::Light& light, const Cell& cell, LightView& lightView);
   static Halfway MakeHalfway(const Scene& scene, const View& view, const LightView& light);
   /// The lobe's exponent n, and what depends on it alone: made once per bound.

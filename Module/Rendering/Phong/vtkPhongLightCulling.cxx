@@ -1,5 +1,7 @@
 #include "vtkPhongLightCulling.h"
 
+#include "vtkPhongAttenuation.h"
+
 #include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -61,15 +63,6 @@ double DistanceToBox(const double p[3], const double box[6])
     squared += outside * outside;
   }
   return std::sqrt(squared);
-}
-
-// 1 / max(c + l*d + q*d*d, 1e-20), with the coefficients as uploaded (finite, >= 0, at most
-// LargestAttenuation): the largest attenuation at distances >= d, since it falls with d.
-double AttenuationAt(vtkLight* light, double d)
-{
-  double k[3];
-  vtkPhongLightCulling::UploadedAttenuation(light, k);
-  return 1.0 / std::max(k[0] + k[1] * d + k[2] * d * d, 1.0e-20);
 }
 
 // How near the light the shader may find a point of the box even where it lies `d` away: its
@@ -222,25 +215,14 @@ double vtkPhongLightCulling::ContributionBound(vtkLight* light, bool isSpot,
     std::max(DistanceToBox(lightPositionVC, boxVC) - FloatReach(lightPositionVC, boxVC), 0.0);
   const double spot =
     isSpot ? SpotFactorBound(light, lightPositionVC, spotAxisVC, boxVC, nearest) : 1.0;
-  return spot == 0.0 ? 0.0 : spot * largest * AttenuationAt(light, nearest);
-}
-
-//------------------------------------------------------------------------------
-void vtkPhongLightCulling::UploadedAttenuation(vtkLight* light, double coefficients[3])
-{
-  const double* values = light->GetAttenuationValues();
-  for (int i = 0; i < 3; ++i)
-  {
-    coefficients[i] = std::min(LightValue(values[i]), vtkPhongProblemLog::LargestAttenuation);
-  }
+  // The attenuation falls with the distance: at most its value at the nearest point.
+  return spot == 0.0 ? 0.0 : spot * largest * vtkPhongAttenuation::Of(light).At(nearest);
 }
 
 //------------------------------------------------------------------------------
 bool vtkPhongLightCulling::IsAttenuated(vtkLight* light)
 {
-  const double* values = light->GetAttenuationValues();
-  return LightValue(values[0]) != 1.0 || LightValue(values[1]) != 0.0 ||
-    LightValue(values[2]) != 0.0;
+  return !vtkPhongAttenuation::Of(light).IsNone();
 }
 
 //------------------------------------------------------------------------------

@@ -71,12 +71,6 @@ public:
    */
   static bool IsAttenuated(vtkLight* light);
 
-  /**
-   * A positional light's attenuation coefficients (c, l, q) as the uniforms upload them:
-   * non-finite or negative ones as 0, none above vtkPhongProblemLog::LargestAttenuation.
-   */
-  static void UploadedAttenuation(vtkLight* light, double coefficients[3]);
-
 private:
   static bool BoxInView(vtkRenderer* ren, const double boundsWC[6], double boxVC[6]);
 };

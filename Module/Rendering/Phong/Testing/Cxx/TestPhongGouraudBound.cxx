@@ -75,7 +75,7 @@ Sums Shade(const Scene& scene, const Vector& n, const Vector& v, const Vector& p
       light.PositionMC[2] - p[2] } };
     const Vector l = light.Positional ? Unit(toLight) : light.ToLightMC;
     const double d = std::sqrt(Dot(toLight, toLight));
-    const auto& k = light.AttenuationMC;
+    const auto& k = light.AttenuationMC.Coefficients;
     const double fade = light.Positional ? 1.0 / (k[0] + k[1] * d + k[2] * d * d) : 1.0;
     const double nl = Dot(n, l);
     sums.Diffuse += fade * light.Diffuse * std::max(nl, 0.0);
@@ -232,7 +232,7 @@ void Attenuate(Scene& scene, std::mt19937& fades, double size)
   {
     if (light.Positional && fades() % 2 == 0)
     {
-      light.AttenuationMC = { { 0.05 + 1.95 * unit(fades), 2.0 * unit(fades) / size,
+      light.AttenuationMC.Coefficients = { { 0.05 + 1.95 * unit(fades), 2.0 * unit(fades) / size,
         2.0 * unit(fades) / (size * size) } };
     }
   }
@@ -549,8 +549,9 @@ void PrintTriangle(vtkPolyData* triangle, const Scene& scene)
     if (light.Positional)
     {
       std::cerr << " at " << light.PositionMC[0] << " " << light.PositionMC[1] << " "
-                << light.PositionMC[2] << " attenuation " << light.AttenuationMC[0] << " "
-                << light.AttenuationMC[1] << " " << light.AttenuationMC[2];
+                << light.PositionMC[2] << " attenuation " << light.AttenuationMC.Coefficients[0]
+                << " " << light.AttenuationMC.Coefficients[1] << " "
+                << light.AttenuationMC.Coefficients[2];
     }
     std::cerr << "\n";
   }
@@ -603,7 +604,7 @@ bool CheckRandomTriangles(std::mt19937& random, int perLobe, double& tightest)
       ++bounded;
       const vtkPhongGouraudBound::Bounds actual = BruteForce(triangle, scene);
       const bool attenuated = std::any_of(scene.Lights.begin(), scene.Lights.end(),
-        [](const Scene::Light& light) { return light.AttenuationMC[0] != 1.0; });
+        [](const Scene::Light& light) { return !light.AttenuationMC.IsNone(); });
       attenuatedScenes += attenuated ? 1 : 0;
       for (int mode = 0; mode < 2; ++mode)
       {
