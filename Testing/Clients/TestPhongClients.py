@@ -155,7 +155,7 @@ def next_to_background(pixels):
     return near & ~background
 
 
-def check_budget(checks, name, script, scene, base, phong):
+def check_budget(checks, name, client, script, scene, base, phong):
     """The third run, under BUDGET: its table cells, or None where it did not draw."""
     run = run_scene(script, scene, base + ".budget.png", True, BUDGET)
     checks.expect(run is not None, name + ": the run under a budget drew")
@@ -178,7 +178,6 @@ def check_budget(checks, name, script, scene, base, phong):
                   % (name, BUDGET, BUDGET + BUDGET_SLACK, SILHOUETTE_PERCENT, int(over.sum()),
                      int((over & ~silhouette).sum()), int(levels.max())))
     modes = sorted(set(run[2])) or ["-"]
-    client = os.path.basename(script).split("_")[0]
     if (client, scene) in BUDGET_PER_VERTEX:
         checks.expect(any("per vertex" in mode for mode in modes),
                       name + ": under a budget, light sums per vertex: %s" % (modes,))
@@ -245,7 +244,7 @@ def main():
                               % (name, said, over, LEVELS))
             mappers = "%s / %s" % (short(stock_run[0] + stock_run[1]),
                                    short(phong_run[0] + phong_run[1]))
-            budget = check_budget(checks, name, script, scene, base, phong) or "- | - | -"
+            budget = check_budget(checks, name, client, script, scene, base, phong) or "- | - | -"
             rows.append("| %s | %s %s | %s | %d | %.2f | %.2f %% | %s | %s |"
                         % (scene, client, version, mappers, int(levels.max()),
                            float(levels.mean()), over, said, budget))

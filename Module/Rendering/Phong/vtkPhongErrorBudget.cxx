@@ -42,9 +42,10 @@ double Strength(const double weight[3], const double* color, double intensity)
   return largest;
 }
 
-// The model-to-view matrix's linear part A, or false when it does not keep angles (A^T A is
-// not s^2 I to 1e-6): per-vertex bounds are in the angles of the model's normals.
-bool SimilarityToView(vtkRenderer* ren, vtkActor* actor, vtkMatrix4x4* modelToView)
+// The model-to-view matrix and its scale s (view units per model unit), or false when its
+// linear part A does not keep angles (A^T A is not s^2 I to 1e-6): per-vertex bounds are in
+// the angles of the model's normals.
+bool SimilarityToView(vtkRenderer* ren, vtkActor* actor, vtkMatrix4x4* modelToView, double& scale)
 {
   vtkMatrix4x4::Multiply4x4(
     ren->GetActiveCamera()->GetModelViewTransformMatrix(), actor->GetMatrix(), modelToView);
@@ -60,8 +61,8 @@ bool SimilarityToView(vtkRenderer* ren, vtkActor* actor, vtkMatrix4x4* modelToVi
       }
     }
   }
-  const double scale = gram[0][0];
-  if (!(scale > 0.0) || !std::isfinite(scale))
+  const double squared = gram[0][0];
+  if (!(squared > 0.0) || !std::isfinite(squared))
   {
     return false;
   }
@@ -69,12 +70,13 @@ bool SimilarityToView(vtkRenderer* ren, vtkActor* actor, vtkMatrix4x4* modelToVi
   {
     for (int j = 0; j < 3; ++j)
     {
-      if (std::abs(gram[i][j] - (i == j ? scale : 0.0)) > 1.0e-6 * scale)
+      if (std::abs(gram[i][j] - (i == j ? squared : 0.0)) > 1.0e-6 * squared)
       {
         return false;
       }
     }
   }
+  scale = std::sqrt(squared);
   return true;
 }
 
@@ -168,8 +170,9 @@ bool vtkPhongErrorBudget::MakeScene(vtkRenderer* ren, vtkActor* actor,
   vtkProperty* back = plan.BackMaterial;
   const double shininess = vtkPhongMaterial::ShininessOf(front);
   vtkNew<vtkMatrix4x4> modelToView, viewToModel;
+  double viewPerModel = 1.0;
   if (shininess != vtkPhongMaterial::ShininessOf(back) ||
-    !SimilarityToView(ren, actor, modelToView))
+    !SimilarityToView(ren, actor, modelToView, viewPerModel))
   {
     return false;
   }
@@ -206,27 +209,22 @@ bool vtkPhongErrorBudget::MakeScene(vtkRenderer* ren, vtkActor* actor,
     bounded.Specular = Strength(weights[2], light->GetSpecularColor(), light->GetIntensity());
     scene.Lights.push_back(bounded);
   }
-  return AddPointLights(ren, plan, viewToModel, weights, scene);
+  return AddPointLights(ren, plan, viewToModel, viewPerModel, weights, scene);
 }
 
 //------------------------------------------------------------------------------
 // Point lights, their attenuation as the shader takes it (vtkPhongAttenuation::Of) in model
-// units: the view's distances are the model's times the similarity's scale. A constant term of 0
-// leaves the scene unbounded (false): the attenuation then has no largest value for the float
-// margin (FloatMargin).
+// units: the view's distances are the model's times the similarity's scale `viewPerModel`. A
+// constant term of 0 leaves the scene unbounded (false): the attenuation then has no largest
+// value for the float margin (FloatMargin).
 bool vtkPhongErrorBudget::AddPointLights(vtkRenderer* ren, const vtkPhongShaderPlan& plan,
-  vtkMatrix4x4* viewToModel, const double weights[3][3], vtkPhongGouraudBound::Scene& scene)
+  vtkMatrix4x4* viewToModel, double viewPerModel, const double weights[3][3],
+  vtkPhongGouraudBound::Scene& scene)
 {
-  // The model's units per view unit: the length of a view axis in model coordinates.
-  const double modelPerView =
-    std::sqrt(viewToModel->GetElement(0, 0) * viewToModel->GetElement(0, 0) +
-      viewToModel->GetElement(1, 0) * viewToModel->GetElement(1, 0) +
-      viewToModel->GetElement(2, 0) * viewToModel->GetElement(2, 0));
-  const double viewPerModel = 1.0 / modelPerView;
   for (vtkLight* light : plan.PointLights)
   {
     const vtkPhongAttenuation attenuation = vtkPhongAttenuation::Of(light);
-    if (!(attenuation.Coefficients[0] > 0.0) || !std::isfinite(viewPerModel))
+    if (!(attenuation.Coefficients[0] > 0.0))
     {
       return false;
     }

@@ -81,10 +81,11 @@ private:
   static bool MakeScene(vtkRenderer* ren, vtkActor* actor, const vtkPhongShaderPlan& plan,
     vtkPhongGouraudBound::Scene& scene);
   // The plan's point lights into `scene` (their positions in model coordinates, by
-  // `viewToModel`; `weights` the materials' of vtkPhongLightCulling::MaterialWeights); false
-  // for one attenuated without a constant term.
+  // `viewToModel`, whose inverse's scale is `viewPerModel`; `weights` the materials' of
+  // vtkPhongLightCulling::MaterialWeights); false for one attenuated without a constant term.
   static bool AddPointLights(vtkRenderer* ren, const vtkPhongShaderPlan& plan,
-    vtkMatrix4x4* viewToModel, const double weights[3][3], vtkPhongGouraudBound::Scene& scene);
+    vtkMatrix4x4* viewToModel, double viewPerModel, const double weights[3][3],
+    vtkPhongGouraudBound::Scene& scene);
   // Whether the specular sums alone per vertex save more than they cost: two lobes or more,
   // 20 or more where per fragment the lobes would be squared.
   static bool SpecularPerVertexPays(const vtkPhongGouraudBound::Scene& scene, bool squared);

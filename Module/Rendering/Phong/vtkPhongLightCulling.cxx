@@ -1,12 +1,11 @@
 #include "vtkPhongLightCulling.h"
 
-#include "vtkPhongAttenuation.h"
-
 #include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkPhongAttenuation.h"
 #include "vtkPhongLightGeometry.h"
 #include "vtkPhongMaterial.h"
 #include "vtkPhongProblemLog.h"
@@ -129,7 +128,8 @@ int vtkPhongLightCulling::Cull(vtkRenderer* ren, const double boundsWC[6], vtkPr
 {
   spent = 0.0;
   double boxVC[6];
-  if (!(bound > 0.0) || (points.empty() && spots.empty()) || !BoxInView(ren, boundsWC, boxVC))
+  if (!(bound > 0.0) || (points.empty() && spots.empty()) ||
+    !TransformBox(boundsWC, ren->GetActiveCamera()->GetModelViewTransformMatrix(), boxVC))
   {
     return 0;
   }
@@ -261,32 +261,30 @@ void vtkPhongLightCulling::MaterialWeights(
 }
 
 //------------------------------------------------------------------------------
-// World bounds in view coordinates: the box around their eight corners.
-bool vtkPhongLightCulling::BoxInView(vtkRenderer* ren, const double boundsWC[6], double boxVC[6])
+bool vtkPhongLightCulling::TransformBox(
+  const double bounds[6], vtkMatrix4x4* matrix, double transformed[6])
 {
-  const double* bounds = boundsWC;
   if (!vtkMath::AreBoundsInitialized(bounds))
   {
     return false;
   }
-  vtkMatrix4x4* worldToView = ren->GetActiveCamera()->GetModelViewTransformMatrix();
   for (int i = 0; i < 3; ++i)
   {
-    boxVC[2 * i] = VTK_DOUBLE_MAX;
-    boxVC[2 * i + 1] = -VTK_DOUBLE_MAX;
+    transformed[2 * i] = VTK_DOUBLE_MAX;
+    transformed[2 * i + 1] = -VTK_DOUBLE_MAX;
   }
   for (int corner = 0; corner < 8; ++corner)
   {
-    const double world[4] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+    const double point[4] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
       bounds[4 + ((corner >> 2) & 1)], 1.0 };
-    double view[4];
-    worldToView->MultiplyPoint(world, view);
+    double moved[4];
+    matrix->MultiplyPoint(point, moved);
     for (int i = 0; i < 3; ++i)
     {
-      const double v = view[i] / (view[3] != 0.0 ? view[3] : 1.0);
-      boxVC[2 * i] = std::min(boxVC[2 * i], v);
-      boxVC[2 * i + 1] = std::max(boxVC[2 * i + 1], v);
+      const double v = moved[i] / (moved[3] != 0.0 ? moved[3] : 1.0);
+      transformed[2 * i] = std::min(transformed[2 * i], v);
+      transformed[2 * i + 1] = std::max(transformed[2 * i + 1], v);
     }
   }
-  return std::all_of(boxVC, boxVC + 6, [](double v) { return std::isfinite(v); });
+  return std::all_of(transformed, transformed + 6, [](double v) { return std::isfinite(v); });
 }

@@ -32,6 +32,7 @@
 #include <vector> // for std::vector
 
 class vtkLight;
+class vtkMatrix4x4;
 class vtkProperty;
 class vtkRenderer;
 
@@ -71,8 +72,12 @@ public:
    */
   static bool IsAttenuated(vtkLight* light);
 
-private:
-  static bool BoxInView(vtkRenderer* ren, const double boundsWC[6], double boxVC[6]);
+  /**
+   * The box around the eight corners of `bounds` through `matrix` (homogeneous): world to
+   * view for the culling, model to world for vtkPhongMapperCore::BoundsInWorld. False where
+   * `bounds` are uninitialized or the result is not finite.
+   */
+  static bool TransformBox(const double bounds[6], vtkMatrix4x4* matrix, double transformed[6]);
 };
 
 #endif

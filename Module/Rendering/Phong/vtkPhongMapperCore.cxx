@@ -7,6 +7,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkPhongCompatibility.h"
+#include "vtkPhongLightCulling.h"
 #include "vtkPhongLightUniforms.h"
 #include "vtkPhongLightingSettings.h"
 #include "vtkPhongMaterialUniforms.h"
@@ -19,7 +20,7 @@
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 #include "vtkBoundingBox.h"
-#include "vtkMatrix4x4.h"
+#include "vtkMath.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLShaderProperty.h"
@@ -254,23 +255,12 @@ void vtkPhongMapperCore::BoundsInWorld(
   {
     boxMC.AddBounds(block->GetBounds());
   }
-  vtkBoundingBox boxWC;
-  if (boxMC.IsValid())
+  double boundsMC[6];
+  boxMC.GetBounds(boundsMC);
+  if (!vtkPhongLightCulling::TransformBox(boundsMC, act->GetMatrix(), boundsWC))
   {
-    vtkMatrix4x4* modelToWorld = act->GetMatrix();
-    for (int corner = 0; corner < 8; ++corner)
-    {
-      const double pointMC[4] = { boxMC.GetBound(corner & 1),
-        boxMC.GetBound(2 + ((corner >> 1) & 1)), boxMC.GetBound(4 + ((corner >> 2) & 1)), 1.0 };
-      double pointWC[4];
-      modelToWorld->MultiplyPoint(pointMC, pointWC);
-      if (pointWC[3] != 0.0)
-      {
-        boxWC.AddPoint(pointWC[0] / pointWC[3], pointWC[1] / pointWC[3], pointWC[2] / pointWC[3]);
-      }
-    }
+    vtkMath::UninitializeBounds(boundsWC);
   }
-  boxWC.GetBounds(boundsWC);
 }
 
 //------------------------------------------------------------------------------
